@@ -1,0 +1,203 @@
+#include "argList.H"
+#include "error.H"
+#include "foamFile.H"
+#include "version.H"
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace sphvcpm
+{
+
+namespace
+{
+const auto wallStart = std::chrono::steady_clock::now();
+}
+
+argList::argList(std::string executable, std::string description)
+:
+    executable_(std::move(executable)),
+    description_(std::move(description))
+{
+    addOption("case", "dir", "specify alternate case directory, default is the cwd");
+    addBoolOption("help", "print the usage");
+}
+
+void argList::addOption(const std::string& name, const std::string& param,
+                        const std::string& usage)
+{
+    specs_[name] = {param, usage};
+}
+
+void argList::addBoolOption(const std::string& name, const std::string& usage)
+{
+    specs_[name] = {"", usage};
+}
+
+void argList::addNote(const std::string& note)
+{
+    notes_.push_back(note);
+}
+
+void argList::printUsage() const
+{
+    std::cout << "\nUsage: " << executable_ << " [OPTIONS]\n\n"
+              << description_ << "\n\noptions:\n";
+    auto print = [&](const std::string& name, const optionSpec& spec)
+    {
+        std::string left = "  -" + name;
+        if (!spec.param.empty())
+        {
+            left += " <" + spec.param + ">";
+        }
+        std::cout << std::left << std::setw(24) << left;
+        if (left.size() >= 24)
+        {
+            std::cout << "\n" << std::string(24, ' ');
+        }
+        std::cout << spec.usage << "\n";
+    };
+    for (const auto& [name, spec] : specs_)
+    {
+        if (name != "help")
+        {
+            print(name, spec);
+        }
+    }
+    print("help", specs_.at("help"));
+    for (const auto& note : notes_)
+    {
+        std::cout << "\n" << note << "\n";
+    }
+    std::cout << std::endl;
+}
+
+bool argList::parse(int argc, char** argv)
+{
+    commandLine_ = executable_;
+    for (int i = 1; i < argc; ++i)
+    {
+        commandLine_ += std::string(" ") + argv[i];
+    }
+
+    for (int i = 1; i < argc; ++i)
+    {
+        std::string arg = argv[i];
+        if (arg.size() < 2 || arg[0] != '-')
+        {
+            printUsage();
+            fatalError("Unexpected argument '" + arg + "' to " + executable_
+                + ": options start with a single '-' (see -help)");
+        }
+        std::string name = arg.substr(arg[1] == '-' ? 2 : 1);
+        auto spec = specs_.find(name);
+        if (spec == specs_.end())
+        {
+            printUsage();
+            fatalError("Invalid option: " + arg);
+        }
+        if (spec->second.param.empty())
+        {
+            given_[name] = "";
+        }
+        else
+        {
+            if (i + 1 >= argc)
+            {
+                printUsage();
+                fatalError("Option " + arg + " expects <"
+                    + spec->second.param + ">");
+            }
+            given_[name] = argv[++i];
+        }
+    }
+
+    if (found("help"))
+    {
+        printUsage();
+        return false;
+    }
+
+    casePath_ = found("case")
+        ? std::filesystem::path(option("case"))
+        : std::filesystem::current_path();
+    std::error_code ec;
+    if (!std::filesystem::is_directory(casePath_, ec))
+    {
+        fatalError("Case directory " + casePath_.string()
+            + " does not exist (given by -case)");
+    }
+    casePath_ = std::filesystem::absolute(casePath_).lexically_normal();
+    if (casePath_.has_filename() == false)
+    {
+        casePath_ = casePath_.parent_path();
+    }
+    return true;
+}
+
+bool argList::found(const std::string& name) const
+{
+    return given_.count(name) > 0;
+}
+
+std::string argList::option(const std::string& name) const
+{
+    auto it = given_.find(name);
+    return it == given_.end() ? std::string() : it->second;
+}
+
+std::string argList::optionOrDefault(const std::string& name,
+                                     const std::string& deflt) const
+{
+    return found(name) ? option(name) : deflt;
+}
+
+void argList::printBanner(const std::string& deviceLine) const
+{
+    char host[256] = "unknown";
+    gethostname(host, sizeof(host) - 1);
+    std::time_t now = std::time(nullptr);
+    char date[64], clock[64];
+    std::strftime(date, sizeof(date), "%b %d %Y", std::localtime(&now));
+    std::strftime(clock, sizeof(clock), "%H:%M:%S", std::localtime(&now));
+    int threads = 1;
+#ifdef _OPENMP
+    threads = omp_get_max_threads();
+#endif
+
+    writeFoamFileBanner(std::cout);
+    std::cout << "Build  : " << SPHVCPM_BUILD << "\n"
+              << "Exec   : " << commandLine_ << "\n"
+              << "Date   : " << date << "\n"
+              << "Time   : " << clock << "\n"
+              << "Host   : " << host << "\n"
+              << "PID    : " << getpid() << "\n"
+              << "Case   : " << casePath_.string() << "\n"
+              << "nProcs : 1\n"
+              << "Threads: " << threads << " (OpenMP)\n"
+              << "Device : " << deviceLine << "\n"
+              << "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n"
+              << std::endl;
+}
+
+std::string executionTimeLine()
+{
+    double wall = std::chrono::duration<double>(
+        std::chrono::steady_clock::now() - wallStart).count();
+    double cpu = double(std::clock())/CLOCKS_PER_SEC;
+    std::ostringstream os;
+    os << "ExecutionTime = " << std::setprecision(6) << cpu
+       << " s  ClockTime = " << std::llround(wall) << " s";
+    return os.str();
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,92 @@
+#include "error.H"
+
+#include <iostream>
+#include <sstream>
+
+namespace sphvcpm
+{
+
+static std::string composeReport(const std::string& message,
+                                 const std::string& file, int line)
+{
+    std::ostringstream os;
+    if (file.empty())
+    {
+        os << "\n--> SPHVCPM FATAL ERROR:\n" << message << "\n";
+    }
+    else
+    {
+        os << "\n--> SPHVCPM FATAL IO ERROR:\n" << message << "\n\nfile: "
+           << file;
+        if (line > 0)
+        {
+            os << " at line " << line;
+        }
+        os << ".\n";
+    }
+    return os.str();
+}
+
+FatalError::FatalError(const std::string& message, const std::string& file,
+                       int line, const std::string& keyword)
+:
+    std::runtime_error(composeReport(message, file, line)),
+    message_(message),
+    file_(file),
+    line_(line),
+    keyword_(keyword)
+{}
+
+std::string FatalError::report() const
+{
+    return what();
+}
+
+void fatalError(const std::string& message)
+{
+    throw FatalError(message);
+}
+
+void fatalIOError(const std::string& file, int line,
+                  const std::string& message, const std::string& keyword)
+{
+    throw FatalError(message, file.empty() ? "<unknown>" : file, line,
+                     keyword);
+}
+
+void warning(const std::string& message, const std::string& file, int line)
+{
+    std::cerr << "\n--> SPHVCPM Warning :\n" << message << "\n";
+    if (!file.empty())
+    {
+        std::cerr << "file: " << file;
+        if (line > 0)
+        {
+            std::cerr << " at line " << line;
+        }
+        std::cerr << ".\n";
+    }
+    std::cerr << std::endl;
+}
+
+int runGuarded(const std::function<int()>& body)
+{
+    try
+    {
+        return body();
+    }
+    catch (const FatalError& err)
+    {
+        std::cout.flush();
+        std::cerr << err.report() << "\nSPHVCPM exiting\n" << std::endl;
+    }
+    catch (const std::exception& err)
+    {
+        std::cout.flush();
+        std::cerr << "\n--> SPHVCPM FATAL ERROR:\n" << err.what()
+                  << "\n\nSPHVCPM exiting\n" << std::endl;
+    }
+    return 1;
+}
+
+} // End namespace sphvcpm
