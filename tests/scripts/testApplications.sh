@@ -1,0 +1,79 @@
+#!/bin/bash
+# Common behaviour of every application: -help, unknown options, -case, the
+# banner and log words, FATAL ERROR blocks with file/line/keyword, and the
+# RunFunctions that tutorials use.
+. "$(dirname "$0")/testLib.sh"
+
+apps="generateParticles particlesToVTK"
+case2D="$SPHVCPM_DIR/tutorials/sphVcpmFsi/hydrostaticTank2D"
+
+for app in $apps; do
+    out="$scratch/$app.help"
+    "$app" -help > "$out" 2>&1
+    check "$app -help exits 0" [ $? -eq 0 ]
+    expectIn "$app -help prints the usage" "$out" "^Usage: $app "
+    expectIn "$app -help lists -case" "$out" "-case <dir>"
+
+    "$app" -bogus > "$out" 2>&1
+    check "$app -bogus exits non-zero" [ $? -ne 0 ]
+    expectIn "$app -bogus says Invalid option" "$out" "Invalid option: -bogus"
+
+    "$app" -case "$scratch/noSuchCase" > "$out" 2>&1
+    check "$app on a missing case exits non-zero" [ $? -ne 0 ]
+    expectIn "$app on a missing case: FATAL ERROR" "$out" "SPHVCPM FATAL ERROR"
+    expectIn "$app on a missing case names it" "$out" "noSuchCase"
+done
+
+# Banner and log words on a real run.
+cp -r "$case2D" "$scratch/case"
+(cd "$scratch/case" && ./Allclean > /dev/null)
+generateParticles -case "$scratch/case" > "$scratch/log.gen" 2>&1
+check "generateParticles runs the 2D tank" [ $? -eq 0 ]
+for word in "^Build  : " "^Exec   : generateParticles -case" "^Host   : " \
+            "^Case   : $scratch/case" "^Threads: [0-9]+" "^Device : cpu" \
+            "ExecutionTime = [0-9.e+-]+ s  ClockTime = [0-9]+ s" "^End"; do
+    expectIn "generateParticles log has /$word/" "$scratch/log.gen" "$word"
+done
+
+# Bad dictionaries: a misspelled keyword and a missing semicolon.
+dict="$scratch/case/system/generateParticlesDict"
+cp "$dict" "$scratch/dict.orig"
+sed -i 's/^dp  /dpp /' "$dict"
+line=$(grep -n '^dpp' "$dict" | cut -d: -f1)
+generateParticles -case "$scratch/case" > "$scratch/log.bad1" 2>&1
+check "misspelled keyword exits 1" [ $? -eq 1 ]
+expectIn "misspelled keyword: FATAL IO ERROR" "$scratch/log.bad1" "SPHVCPM FATAL IO ERROR"
+expectIn "misspelled keyword: names the keyword" "$scratch/log.bad1" "dpp"
+expectIn "misspelled keyword: names file and line" "$scratch/log.bad1" \
+    "system/generateParticlesDict.* at line $line"
+expectIn "misspelled keyword: suggests dp" "$scratch/log.bad1" "'dp'"
+
+cp "$scratch/dict.orig" "$dict"
+sed -i 's/^nDimensions     2;/nDimensions     2/' "$dict"
+generateParticles -case "$scratch/case" > "$scratch/log.bad2" 2>&1
+check "missing semicolon exits 1" [ $? -eq 1 ]
+expectIn "missing semicolon: FATAL IO ERROR with the file" "$scratch/log.bad2" \
+    "file: .*system/generateParticlesDict at line [0-9]+"
+
+# RunFunctions: log.<app>, refusal to overwrite, exit status.
+cp "$scratch/dict.orig" "$dict"
+(
+    cd "$scratch/case" || exit 1
+    . "$SPHVCPM_DIR/bin/tools/RunFunctions"
+    runApplication generateParticles > out1 2>&1; echo "status1=$?"
+    runApplication generateParticles > out2 2>&1; echo "status2=$?"
+    runApplication -overwrite generateParticles > out3 2>&1; echo "status3=$?"
+    runApplication -s bad particlesToVTK -time nonsense > out4 2>&1; echo "status4=$?"
+) > "$scratch/run.status"
+expectIn "runApplication runs and succeeds" "$scratch/run.status" "^status1=0$"
+check "runApplication writes log.generateParticles" \
+    grep -q "^End" "$scratch/case/log.generateParticles"
+expectIn "runApplication refuses to re-run" "$scratch/run.status" "^status2=[1-9]"
+expectIn "runApplication explains the refusal" "$scratch/case/out2" \
+    "already run .*remove log file 'log.generateParticles'"
+expectIn "runApplication -overwrite re-runs" "$scratch/run.status" "^status3=0$"
+expectIn "runApplication passes a failure on" "$scratch/run.status" "^status4=[1-9]"
+check "runApplication -s writes log.<app>.<suffix>" \
+    [ -f "$scratch/case/log.particlesToVTK.bad" ]
+
+finish

@@ -1,0 +1,37 @@
+# Shared helpers of the script tests (sourced). Each test counts its checks
+# and ends with "N passed, N failed".
+set -u
+nPassed=0
+nFailed=0
+
+pass() { nPassed=$((nPassed + 1)); echo "PASS: $*"; }
+fail() { nFailed=$((nFailed + 1)); echo "FAIL: $*"; }
+
+# check "what" command...: passes when the command succeeds
+check()
+{
+    local what="$1"; shift
+    if "$@"; then pass "$what"; else fail "$what"; fi
+}
+
+# expectIn "what" file pattern: grep -E pattern in file
+expectIn()
+{
+    if grep -qE -- "$3" "$2"; then pass "$1"; else
+        fail "$1: /$3/ not found in $2"; sed 's/^/    | /' "$2" | tail -n 15
+    fi
+}
+
+finish()
+{
+    echo "$nPassed passed, $nFailed failed"
+    [ "$nFailed" -eq 0 ]
+}
+
+# A scratch directory removed on exit.
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/sphvcpmTest.XXXXXX")
+trap 'rm -rf "$scratch"' EXIT
+
+: "${SPHVCPM_DIR:=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}"
+export SPHVCPM_DIR
+export PATH="$SPHVCPM_DIR/platforms/bin:$SPHVCPM_DIR/bin:$PATH"

@@ -1,0 +1,52 @@
+#!/bin/bash
+# Runs every tutorial's Allclean and Allrun in a scratch copy, checks the logs
+# (no FATAL, End present) and the particle counts against the geometry.
+. "$(dirname "$0")/testLib.sh"
+
+# expectedCount <tutorial> <body>: lattice nodes of the generating dictionary
+# (box of L/dp x H/dp nodes; container = outer box minus inner box).
+expectedCount()
+{
+    case "$1/$2" in
+        hydrostaticTank2D/water) echo $((100*50)) ;;
+        hydrostaticTank2D/tank)  echo $((106*83 - 100*80)) ;;   # 3 layers, open top
+        hydrostaticTank3D/water) echo $((40*40*24)) ;;
+        hydrostaticTank3D/tank)  echo $((46*46*39 - 40*40*36)) ;;
+        *) echo "" ;;
+    esac
+}
+
+for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
+    src=$(dirname "$allrun")
+    name=$(basename "$src")
+    run="$scratch/$name"
+    cp -r "$src" "$run"
+    "$run/Allclean" > /dev/null 2>&1
+    "$run/Allrun" > "$scratch/$name.out" 2>&1
+    check "$name: Allrun succeeds" [ $? -eq 0 ]
+    for log in "$run"/log.*; do
+        [ -f "$log" ] || continue
+        check "$name: $(basename "$log") ends with End" grep -q "^End" "$log"
+        check "$name: $(basename "$log") has no FATAL" bash -c "! grep -q FATAL '$log'"
+    done
+    for bodyDir in "$run"/0/*/; do
+        body=$(basename "$bodyDir")
+        [ "$body" = uniform ] && continue
+        n=$(sed -n 's/^\([0-9][0-9]*\)$/\1/p; s/.*List<vector> *\([0-9][0-9]*\)(.*/\1/p' \
+            "$bodyDir/position" | head -n 1)
+        want=$(expectedCount "$name" "$body")
+        if [ -n "$want" ]; then
+            check "$name: $body has $want particles (found $n)" [ "$n" = "$want" ]
+            expectIn "$name: log reports $body's count" "$run/log.generateParticles" \
+                "$body \([a-z]+\): $want particles"
+        fi
+        check "$name: VTK series for $body" [ -f "$run/VTK/$body.vtp.series" ]
+        check "$name: VTK file for $body" [ -f "$run/VTK/$body/${body}_0.vtp" ]
+    done
+    # Cleaning leaves exactly what is in the repository.
+    "$run/Allclean" > /dev/null 2>&1
+    check "$name: Allclean restores the case" \
+        diff -r -q -x 'log.*' "$src" "$run"
+done
+
+finish
