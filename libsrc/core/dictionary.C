@@ -1,0 +1,855 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// Entries, lookup, editing and writing of dictionaries. Reading is in
+// dictionaryParser.C and typed values in dictionaryValues.C.
+
+#include "dictionary.H"
+#include "dictionaryParser.H"
+#include "error.H"
+#include "foamFile.H"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <regex>
+#include <sstream>
+#include <unordered_map>
+
+namespace sphvcpm
+{
+
+// * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * * //
+
+std::size_t dictionaryDetail::editDistance(const std::string& a,
+                                           const std::string& b)
+{
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+    {
+        prev[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+        {
+            const std::size_t subst = prev[j - 1] + (a[i - 1] != b[j - 1]);
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
+        }
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+
+std::string dictionaryDetail::closest(const std::string& key,
+                                      const std::vector<std::string>& cands)
+{
+    std::string best;
+    std::size_t bestDistance = std::string::npos;
+    for (const auto& c : cands)
+    {
+        const std::size_t d = editDistance(key, c);
+        if (d < bestDistance)
+        {
+            best = c;
+            bestDistance = d;
+        }
+    }
+    // A misspelling changes a few characters, not most of the word.
+    const std::size_t limit = std::max<std::size_t>(2, key.size()/3);
+    if (best.empty() || bestDistance > limit || bestDistance >= key.size())
+    {
+        return "";
+    }
+    return best;
+}
+
+
+std::string dictionaryDetail::listWords(const std::vector<std::string>& words)
+{
+    std::string s = "(";
+    for (std::size_t i = 0; i < words.size(); ++i)
+    {
+        s += (i ? " " : "") + words[i];
+    }
+    return s + ")";
+}
+
+
+std::string dictionaryDetail::describe(const token& t)
+{
+    switch (t.type)
+    {
+        case token::kind::punctuation: return "'" + t.text + "'";
+        case token::kind::word: return "word '" + t.text + "'";
+        case token::kind::string: return "string " + quote(t.text);
+        case token::kind::integer: return "integer " + t.str();
+        case token::kind::floating: return "floating-point number " + t.str();
+        case token::kind::variable: return "variable '$" + t.text + "'";
+        case token::kind::directive: return "directive '#" + t.text + "'";
+        case token::kind::verbatim: return "verbatim string #{...#}";
+    }
+    return "'" + t.text + "'";
+}
+
+
+std::string dictionaryDetail::formatScalar(double v)
+{
+    for (int precision = 1; precision <= 17; ++precision)
+    {
+        std::ostringstream os;
+        os << std::setprecision(precision) << v;
+        if (std::strtod(os.str().c_str(), nullptr) == v)
+        {
+            return os.str();
+        }
+    }
+    std::ostringstream os;
+    os << std::setprecision(17) << v;
+    return os.str();
+}
+
+
+token dictionaryDetail::numberToken(double v)
+{
+    token t;
+    t.text = formatScalar(v);
+    t.floatValue = v;
+    t.type = token::kind::floating;
+    const bool integral = t.text.find_first_not_of("-0123456789")
+        == std::string::npos;
+    if (integral)
+    {
+        errno = 0;
+        const long long i = std::strtoll(t.text.c_str(), nullptr, 10);
+        if (errno != ERANGE)
+        {
+            t.type = token::kind::integer;
+            t.integerValue = i;
+        }
+    }
+    return t;
+}
+
+
+token dictionaryDetail::integerToken(std::int64_t v)
+{
+    token t;
+    t.type = token::kind::integer;
+    t.integerValue = v;
+    t.floatValue = double(v);
+    t.text = std::to_string(v);
+    return t;
+}
+
+
+token dictionaryDetail::wordToken(const std::string& text)
+{
+    token t;
+    t.type = token::kind::word;
+    t.text = text;
+    return t;
+}
+
+
+token dictionaryDetail::stringToken(const std::string& text)
+{
+    token t;
+    t.type = token::kind::string;
+    t.text = text;
+    return t;
+}
+
+
+token dictionaryDetail::punctuationToken(char c)
+{
+    token t;
+    t.type = token::kind::punctuation;
+    t.text = std::string(1, c);
+    return t;
+}
+
+
+std::string dictionaryDetail::quote(const std::string& text)
+{
+    // The reader keeps backslashes, except one that escapes a quote or a
+    // newline; so a run of backslashes before either must be even before
+    // the escaping one is added. (An odd run there cannot be written
+    // exactly in OpenFOAM's format: it gains one backslash.)
+    std::string out = "\"";
+    std::size_t run = 0;
+    for (const char c : text)
+    {
+        if (c == '"' || c == '\n')
+        {
+            out += (run % 2 == 0) ? "\\" : "\\\\";
+        }
+        out += c;
+        run = (c == '\\') ? run + 1 : 0;
+    }
+    if (run % 2 == 1)
+    {
+        out += '\\';
+    }
+    return out + "\"";
+}
+
+
+std::string dictionaryDetail::joinTokens(const std::vector<token>& tokens)
+{
+    // Written the way OpenFOAM writes them: (1 2 3), 3(1 2 3), 10{0},
+    // [0 2 -1 0 0 0 0], [kg/m^3], and re-read as the same tokens.
+    std::string out;
+    std::vector<bool> braces;   // open '{': true for N{v} (written tight)
+    int units = 0;              // depth of '[' (dimensions)
+    for (std::size_t i = 0; i < tokens.size(); ++i)
+    {
+        const token& b = tokens[i];
+        bool tight = false;
+        if (i > 0)
+        {
+            const token& a = tokens[i - 1];
+            const bool aSlash = a.isPunctuation('/');
+            const bool bSlash = b.isPunctuation('/');
+            tight =
+                a.isPunctuation('(') || a.isPunctuation('[')
+             || b.isPunctuation(')')
+             // the lexer would glue ']' onto a word or a variable
+             || (b.isPunctuation(']') && a.type != token::kind::word
+              && a.type != token::kind::variable)
+             || (a.type == token::kind::integer
+              && (b.isPunctuation('(') || b.isPunctuation('{')))
+             || (a.isPunctuation('{') && !braces.empty() && braces.back())
+             || (b.isPunctuation('}') && !braces.empty() && braces.back())
+             // m^2/s inside units, but never // or /* (comments)
+             || (units > 0 && (aSlash || bSlash)
+              && !(aSlash && (bSlash || b.isPunctuation('*')))
+              && !(bSlash && a.isPunctuation('*')));
+            if (!tight)
+            {
+                out += ' ';
+            }
+        }
+        if (b.isPunctuation('{'))
+        {
+            braces.push_back
+            (
+                i > 0 && tokens[i - 1].type == token::kind::integer
+            );
+        }
+        else if (b.isPunctuation('}') && !braces.empty())
+        {
+            braces.pop_back();
+        }
+        else if (b.isPunctuation('['))
+        {
+            ++units;
+        }
+        else if
+        (
+            units > 0
+         && (b.isPunctuation(']')
+          || (b.type == token::kind::word && !b.text.empty()
+           && b.text.back() == ']'))
+        )
+        {
+            --units;
+        }
+        out += b.str();
+    }
+    return out;
+}
+
+
+bool dictionaryDetail::regexMatch(const std::string& pattern,
+                                  const std::string& key)
+{
+    thread_local std::unordered_map<std::string, std::regex> cache;
+    auto iter = cache.find(pattern);
+    if (iter == cache.end())
+    {
+        iter = cache.emplace(pattern, std::regex(pattern)).first;
+    }
+    return std::regex_match(key, iter->second);
+}
+
+
+void dictionaryDetail::checkRegex(const std::string& pattern)
+{
+    regexMatch(pattern, "");
+}
+
+
+void dictionaryDetail::appendDictTokens(const dictionary& d,
+                                        std::vector<token>& out, int line)
+{
+    auto push = [&](token t)
+    {
+        t.line = line;
+        out.push_back(std::move(t));
+    };
+    push(punctuationToken('{'));
+    for (const auto& key : d.keys())
+    {
+        const entry& e = *d.findEntry(key);
+        push(e.isPattern() ? stringToken(key) : wordToken(key));
+        if (e.isDict())
+        {
+            appendDictTokens(e.dict(), out, line);
+        }
+        else
+        {
+            for (const auto& t : e.tokens())
+            {
+                push(t);
+            }
+            push(punctuationToken(';'));
+        }
+    }
+    push(punctuationToken('}'));
+}
+
+
+// * * * * * * * * * * * * * * * * * token * * * * * * * * * * * * * * * * //
+
+std::string token::str() const
+{
+    switch (type)
+    {
+        case kind::string:
+            return dictionaryDetail::quote(text);
+        case kind::integer:
+            return text.empty() ? std::to_string(integerValue) : text;
+        case kind::floating:
+            return text.empty()
+                 ? dictionaryDetail::formatScalar(floatValue) : text;
+        case kind::variable:
+            return "$" + text;
+        case kind::directive:
+            return "#" + text;
+        case kind::verbatim:
+            return "#{" + text + "#}";
+        default:
+            return text;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * entry * * * * * * * * * * * * * * * * //
+
+entry::entry(std::string keyword, std::vector<token> tokens,
+             std::string file, int line, bool isPattern)
+:
+    keyword_(std::move(keyword)),
+    tokens_(std::move(tokens)),
+    file_(std::move(file)),
+    line_(line),
+    isPattern_(isPattern)
+{}
+
+
+entry::entry(std::string keyword, std::unique_ptr<dictionary> dict,
+             std::string file, int line, bool isPattern)
+:
+    keyword_(std::move(keyword)),
+    dict_(dict ? std::move(dict) : std::make_unique<dictionary>(keyword_)),
+    file_(std::move(file)),
+    line_(line),
+    isPattern_(isPattern)
+{}
+
+
+entry::entry(const entry& e)
+:
+    keyword_(e.keyword_),
+    tokens_(e.tokens_),
+    dict_(e.dict_ ? std::make_unique<dictionary>(*e.dict_) : nullptr),
+    file_(e.file_),
+    line_(e.line_),
+    isPattern_(e.isPattern_)
+{}
+
+
+entry::entry(entry&&) noexcept = default;
+entry& entry::operator=(entry&&) noexcept = default;
+entry::~entry() = default;
+
+
+entry& entry::operator=(const entry& e)
+{
+    if (this != &e)
+    {
+        entry copy(e);
+        *this = std::move(copy);
+    }
+    return *this;
+}
+
+
+const dictionary& entry::dict() const
+{
+    if (!dict_)
+    {
+        fatalIOError(file_, line_, "Keyword '" + keyword_ + "' is not a "
+            "sub-dictionary: expected '{', found the value '"
+            + dictionaryDetail::joinTokens(tokens_) + "'", keyword_);
+    }
+    return *dict_;
+}
+
+
+dictionary& entry::dict()
+{
+    return const_cast<dictionary&>(static_cast<const entry&>(*this).dict());
+}
+
+
+const std::vector<token>& entry::tokens() const
+{
+    if (dict_)
+    {
+        fatalIOError(file_, line_, "Keyword '" + keyword_ + "' is a "
+            "sub-dictionary (opened at line " + std::to_string(dict_->line())
+            + "), not a value", keyword_);
+    }
+    return tokens_;
+}
+
+
+// * * * * * * * * * * * * * * * * dictionary * * * * * * * * * * * * * * //
+
+dictionary::dictionary(std::string name)
+:
+    name_(name),
+    file_(std::move(name))
+{}
+
+
+dictionary::dictionary(const dictionary& d)
+:
+    name_(d.name_),
+    file_(d.file_),
+    line_(d.line_),
+    parent_(nullptr),
+    entries_(d.entries_),
+    header_(d.header_ ? std::make_unique<dictionary>(*d.header_) : nullptr)
+{
+    reparent();
+}
+
+
+dictionary& dictionary::operator=(const dictionary& d)
+{
+    if (this != &d)
+    {
+        // Through a copy: d may live inside this dictionary.
+        dictionary copy(d);
+        *this = std::move(copy);
+    }
+    return *this;
+}
+
+
+dictionary::dictionary(dictionary&& d) noexcept
+:
+    name_(std::move(d.name_)),
+    file_(std::move(d.file_)),
+    line_(d.line_),
+    parent_(d.parent_),
+    entries_(std::move(d.entries_)),
+    header_(std::move(d.header_))
+{
+    d.parent_ = nullptr;
+    reparent();
+}
+
+
+dictionary& dictionary::operator=(dictionary&& d) noexcept
+{
+    if (this != &d)
+    {
+        // Take everything out of d first: d may live inside this one.
+        std::string name = std::move(d.name_);
+        std::string file = std::move(d.file_);
+        const int line = d.line_;
+        std::vector<entry> entries = std::move(d.entries_);
+        std::unique_ptr<dictionary> header = std::move(d.header_);
+
+        name_ = std::move(name);
+        file_ = std::move(file);
+        line_ = line;
+        entries_ = std::move(entries);
+        header_ = std::move(header);
+        reparent();
+    }
+    return *this;
+}
+
+
+dictionary::~dictionary() = default;
+
+
+void dictionary::reparent()
+{
+    for (auto& e : entries_)
+    {
+        if (e.isDict())
+        {
+            e.dict().parent_ = this;
+        }
+    }
+}
+
+
+dictionary dictionary::fromFile(const std::filesystem::path& file)
+{
+    return dictionaryParser::readFile(file);
+}
+
+
+dictionary dictionary::fromString(const std::string& text,
+                                  const std::string& name)
+{
+    return dictionaryParser::readString(text, name);
+}
+
+
+const dictionary& dictionary::topDict() const
+{
+    const dictionary* d = this;
+    while (d->parent_)
+    {
+        d = d->parent_;
+    }
+    return *d;
+}
+
+
+const dictionary* dictionary::header() const
+{
+    return header_.get();
+}
+
+
+bool dictionary::found(const std::string& key) const
+{
+    return findEntry(key) != nullptr;
+}
+
+
+bool dictionary::isDict(const std::string& key) const
+{
+    const entry* e = findEntry(key);
+    return e && e->isDict();
+}
+
+
+const entry* dictionary::findEntry(const std::string& key) const
+{
+    for (const auto& e : entries_)
+    {
+        if (e.keyword() == key)
+        {
+            return &e;
+        }
+    }
+    // Patterns last first: a later, more specific pattern wins.
+    for (auto iter = entries_.rbegin(); iter != entries_.rend(); ++iter)
+    {
+        if (iter->isPattern()
+         && dictionaryDetail::regexMatch(iter->keyword(), key))
+        {
+            return &*iter;
+        }
+    }
+    return nullptr;
+}
+
+
+const entry& dictionary::lookupEntry(const std::string& key) const
+{
+    if (const entry* e = findEntry(key))
+    {
+        return *e;
+    }
+    const std::vector<std::string> present = keys();
+    const std::string guess = dictionaryDetail::closest(key, present);
+    fatalIOError(file_, line_, "Keyword '" + key + "' is undefined in "
+        "dictionary \"" + name_ + "\"."
+        + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
+        + " Valid keywords are: " + dictionaryDetail::listWords(present),
+        key);
+}
+
+
+const dictionary* dictionary::findDict(const std::string& key) const
+{
+    const entry* e = findEntry(key);
+    return e && e->isDict() ? &e->dict() : nullptr;
+}
+
+
+const dictionary& dictionary::subDict(const std::string& key) const
+{
+    return lookupEntry(key).dict();
+}
+
+
+dictionary& dictionary::subDict(const std::string& key)
+{
+    return const_cast<dictionary&>
+    (
+        static_cast<const dictionary&>(*this).subDict(key)
+    );
+}
+
+
+std::vector<std::string> dictionary::keys() const
+{
+    std::vector<std::string> k;
+    k.reserve(entries_.size());
+    for (const auto& e : entries_)
+    {
+        k.push_back(e.keyword());
+    }
+    return k;
+}
+
+
+std::vector<std::string> dictionary::subDictKeys() const
+{
+    std::vector<std::string> k;
+    for (const auto& e : entries_)
+    {
+        if (e.isDict())
+        {
+            k.push_back(e.keyword());
+        }
+    }
+    return k;
+}
+
+
+std::size_t dictionary::size() const
+{
+    return entries_.size();
+}
+
+
+void dictionary::checkKeywords(const std::vector<std::string>& valid) const
+{
+    for (const auto& e : entries_)
+    {
+        if
+        (
+            e.isPattern()
+         || std::find(valid.begin(), valid.end(), e.keyword()) != valid.end()
+        )
+        {
+            continue;
+        }
+        const std::string guess =
+            dictionaryDetail::closest(e.keyword(), valid);
+        fatalIOError(e.file(), e.line(), "Unknown keyword '" + e.keyword()
+            + "' in dictionary \"" + name_ + "\"."
+            + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
+            + " Valid keywords are: " + dictionaryDetail::listWords(valid),
+            e.keyword());
+    }
+}
+
+
+void dictionary::setTokens(const std::string& key, std::vector<token> tokens)
+{
+    entry e(key, std::move(tokens), file_, 0);
+    for (auto& x : entries_)
+    {
+        if (x.keyword() == key)
+        {
+            x = std::move(e);
+            return;
+        }
+    }
+    entries_.push_back(std::move(e));
+}
+
+
+dictionary& dictionary::setSubDict(const std::string& key)
+{
+    for (auto& x : entries_)
+    {
+        if (x.keyword() == key)
+        {
+            if (!x.isDict())
+            {
+                x = entry(key, std::make_unique<dictionary>(), file_, 0);
+            }
+            dictionaryParser::adopt(x.dict(), *this, key);
+            x.dict().file_ = file_;
+            return x.dict();
+        }
+    }
+    entries_.emplace_back(key, std::make_unique<dictionary>(), file_, 0);
+    dictionary& d = entries_.back().dict();
+    dictionaryParser::adopt(d, *this, key);
+    d.file_ = file_;
+    return d;
+}
+
+
+bool dictionary::remove(const std::string& key)
+{
+    for (auto iter = entries_.begin(); iter != entries_.end(); ++iter)
+    {
+        if (iter->keyword() == key)
+        {
+            entries_.erase(iter);
+            return true;
+        }
+    }
+    return false;
+}
+
+
+void dictionary::write(std::ostream& os, int indentLevel) const
+{
+    const std::string indent(4*std::max(indentLevel, 0), ' ');
+    bool first = true;
+    for (const auto& e : entries_)
+    {
+        // OpenFOAM leaves a blank line between top-level entries.
+        if (indentLevel == 0 && !first)
+        {
+            os << '\n';
+        }
+        first = false;
+
+        const std::string key = e.isPattern()
+            ? dictionaryDetail::quote(e.keyword()) : e.keyword();
+        if (e.isDict())
+        {
+            os << indent << key << '\n' << indent << "{\n";
+            e.dict().write(os, indentLevel + 1);
+            os << indent << "}\n";
+            continue;
+        }
+        os << indent << key;
+        const auto& tokens = e.tokens();
+        if (!tokens.empty())
+        {
+            // Values start at column 16 after the indent (keyType.C).
+            const std::size_t pad = key.size() < 15 ? 16 - key.size() : 1;
+            os << std::string(pad, ' ') << dictionaryDetail::joinTokens(tokens);
+        }
+        os << ";\n";
+    }
+}
+
+
+void dictionary::writeFile(const std::filesystem::path& file,
+                           const std::string& location) const
+{
+    std::ofstream os(file);
+    if (!os)
+    {
+        fatalIOError(file.string(), 0, "Cannot open \"" + file.string()
+            + "\" for writing");
+    }
+    foamFileHeader header;
+    header.object = file.filename().string();
+    header.location = location;
+    writeFoamFileHeader(os, header);
+    write(os);
+    writeFoamFileEnd(os);
+    os.close();
+    if (!os)
+    {
+        fatalIOError(file.string(), 0, "Error writing \"" + file.string()
+            + "\"");
+    }
+}
+
+
+namespace
+{
+
+bool sameToken(const token& a, const token& b)
+{
+    if (a.isNumber() && b.isNumber())
+    {
+        if (a.type == token::kind::integer && b.type == token::kind::integer)
+        {
+            return a.integerValue == b.integerValue;
+        }
+        return a.floatValue == b.floatValue;
+    }
+    return a.type == b.type && a.text == b.text;
+}
+
+} // End anonymous namespace
+
+
+bool dictionary::operator==(const dictionary& other) const
+{
+    if (entries_.size() != other.entries_.size())
+    {
+        return false;
+    }
+    for (std::size_t i = 0; i < entries_.size(); ++i)
+    {
+        const entry& a = entries_[i];
+        const entry& b = other.entries_[i];
+        if
+        (
+            a.keyword() != b.keyword() || a.isPattern() != b.isPattern()
+         || a.isDict() != b.isDict()
+        )
+        {
+            return false;
+        }
+        if (a.isDict())
+        {
+            if (a.dict() != b.dict())
+            {
+                return false;
+            }
+            continue;
+        }
+        const auto& ta = a.tokens();
+        const auto& tb = b.tokens();
+        if
+        (
+            ta.size() != tb.size()
+         || !std::equal(ta.begin(), ta.end(), tb.begin(), sameToken)
+        )
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+void dictionary::fatal(const std::string& message,
+                       const std::string& keyword) const
+{
+    fatalIOError(file_, line_, message, keyword);
+}
+
+
+void dictionary::fatalAt(const std::string& key,
+                         const std::string& message) const
+{
+    if (const entry* e = findEntry(key))
+    {
+        fatalIOError(e->file(), e->line(), message, key);
+    }
+    fatal(message, key);
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,373 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// Malformed dictionaries: each must stop with a FatalError naming the file,
+// the line, and what was expected and found. Refused directives, include
+// recursion and bad values are here too.
+
+#include "dictionary.H"
+#include "error.H"
+#include "testDictionaryTools.H"
+
+#include <gtest/gtest.h>
+
+using namespace sphvcpm;
+using test::catchFatal;
+using test::expectError;
+using test::scratchDir;
+
+namespace
+{
+
+// A case file name, so that messages are checked for the real thing.
+const std::string caseFile = "/home/user/run/damBreak/system/badDict";
+
+struct syntaxCase
+{
+    const char* name;
+    const char* text;
+    int line;
+    std::vector<std::string> parts;
+};
+
+// Errors while reading (lexer, entries, macros, directives).
+const std::vector<syntaxCase> syntaxCases =
+{
+    {"unterminatedString", "a 1;\nb \"abc\\\ndef", 2,
+     {"Unterminated string (opened at line 2)", "expected a closing '\"'",
+      "found end of file"}},
+    {"newlineInString", "a 1;\nb \"abc\ndef\";\n", 2,
+     {"Newline inside a string (opened at line 2)"}},
+    {"unterminatedComment", "a 1;\n/* a comment\nb 2;\n", 2,
+     {"Unterminated /* comment (opened at line 2)", "expected '*/'",
+      "found end of file"}},
+    {"unterminatedVerbatim", "a 1;\ncode #{ x = 1;\n", 2,
+     {"Unterminated verbatim string #{", "expected '#}'"}},
+    {"missingSemicolonAtEof", "a 1;\nb 2", 2,
+     {"Unexpected end of file after the value of keyword 'b'",
+      "expected ';'"}},
+    {"missingSemicolonBeforeBrace", "s\n{\n    a 1\n}\n", 3,
+     {"Missing ';' after the value of keyword 'a'", "expected ';'",
+      "found '}' at line 4"}},
+    {"eofInsideDict", "a 1;\nsub\n{\n    b 2;\n", 3,
+     {"Unexpected end of file in sub-dictionary 'sub' opened at line 3",
+      "expected '}'"}},
+    {"eofInsideNestedDict", "a\n{\n    b\n    {\n        c 1;\n    }\n", 2,
+     {"Unexpected end of file in sub-dictionary 'a' opened at line 2"}},
+    {"strayClosingBrace", "a 1;\n}\nb 2;\n", 2,
+     {"Unexpected '}' with no matching '{'", "expected a keyword"}},
+    {"unclosedParenthesis", "a (1 2;\nb 3;\n", 1,
+     {"in the value of keyword 'a'", "expected ')' to close '(' opened at "
+      "line 1", "Unexpected end of file"}},
+    {"unmatchedParenthesis", "x 0;\na 1 2);\n", 2,
+     {"Unmatched ')' in the value of keyword 'a'"}},
+    {"mismatchedBracket", "a (1\n2};\n", 2,
+     {"Mismatched '}' in the value of keyword 'a'",
+      "expected ')' to close '(' opened at line 1"}},
+    {"badNumber", "a 1;\nb 1.2.3;\n", 2, {"Bad number '1.2.3'"}},
+    {"badExponent", "a 1e;\n", 1, {"Bad number '1e'"}},
+    {"singleQuote", "a 'x';\n", 1,
+     {"Unexpected single quote", "double quotes"}},
+    {"unbalancedWord", "div(phi,U Gauss linear;\n", 1,
+     {"Unbalanced parentheses in word 'div(phi,U'", "expected ')'"}},
+    {"numberAsKeyword", "a 1;\n42 b;\n", 2,
+     {"Expected a keyword, found integer 42"}},
+    {"punctuationAsKeyword", "a 1;\n\n[ b ];\n", 3,
+     {"Expected a keyword, found '['"}},
+    {"eofAfterKeyword", "a 1;\nb", 2,
+     {"Unexpected end of file after keyword 'b'", "expected a value"}},
+    {"calcRefused", "a 1;\nb #calc \"$a + 1\";\n", 2,
+     {"Directive #calc is not supported by sphvcpm",
+      "compiles and runs C++"}},
+    {"codeStreamRefused", "a\n{\n    #codeStream { code #{ #}; }\n}\n", 3,
+     {"Directive #codeStream is not supported by sphvcpm"}},
+    {"ifRefused", "a 1;\n#if 1\nb 2;\n#endif\n", 2,
+     {"Directive #if is not supported by sphvcpm", "conditional"}},
+    {"ifeqRefused", "#ifeq $a 1\n", 1,
+     {"Directive #ifeq is not supported by sphvcpm"}},
+    {"elseRefused", "a 1;\n#else\n", 2,
+     {"Directive #else is not supported by sphvcpm"}},
+    {"endifRefused", "#endif\n", 1,
+     {"Directive #endif is not supported by sphvcpm"}},
+    {"includeFuncRefused", "functions\n{\n    #includeFunc probes\n}\n", 3,
+     {"Directive #includeFunc is not supported by sphvcpm"}},
+    {"unknownDirective", "a 1;\n#frobnicate x\n", 2,
+     {"Directive #frobnicate is not supported by sphvcpm",
+      "Supported directives are (#include #includeIfPresent #sinclude "
+      "#includeEtc #remove #inputMode)"}},
+    {"directiveInValue", "a 1 #include \"x\";\n", 1,
+     {"Directive #include cannot appear inside the value of keyword 'a'"}},
+    {"includeWithoutQuotes", "#include controlDict\n", 1,
+     {"Expected a quoted file name after #include",
+      "found word 'controlDict'"}},
+    {"includeAtEof", "a 1;\n#include", 2,
+     {"Expected a quoted file name after #include", "found end of file"}},
+    {"includeMissingFile", "a 1;\n\n#include \"notThere\"\n", 3,
+     {"Cannot find #include file \"notThere\"",
+      "/home/user/run/damBreak/system/notThere"}},
+    {"badInputMode", "#inputMode sloppy\n", 1,
+     {"Expected one of (merge overwrite protect warn error default) after "
+      "#inputMode", "found word 'sloppy'"}},
+    {"removeNothing", "a 1;\n#remove ;\n", 2,
+     {"Expected a keyword or a list (a b ...) after #remove", "found ';'"}},
+    {"removeUnclosedList", "a 1;\n#remove (a b\n", 2,
+     {"Unexpected end of file in the list of #remove", "expected ')'"}},
+    {"duplicateInErrorMode", "#inputMode error\na 1;\nb 2;\na 3;\n", 4,
+     {"Duplicate keyword 'a'", "first defined at line 2"}},
+    {"undefinedVariable", "nu 1e-6;\nrho 1000;\nmu $nuu;\n", 3,
+     {"Undefined variable '$nuu' in the value of keyword 'mu'",
+      "Did you mean 'nu'?", "Valid keywords are: (nu rho)"}},
+    {"undefinedScopedVariable", "a { b 1; }\nc $a/x;\n", 2,
+     {"Undefined variable '$a/x'", "no keyword 'a/x' in dictionary \""
+      "/home/user/run/damBreak/system/badDict/a\"",
+      "Valid keywords are: (b)"}},
+    {"parentOfTopLevel", "a $../b;\n", 1, {"Undefined variable '$../b'"}},
+    {"spliceValue", "a 1;\nb\n{\n    $a;\n}\n", 4,
+     {"Cannot splice '$a'", "it is not a sub-dictionary"}},
+    {"keyFromDictVariable", "a { }\n$a { b 1; }\n", 2,
+     {"'$a' used as a keyword must name a single word",
+      "it is a sub-dictionary"}},
+    {"badVariable", "a 1;\nb $ ;\n", 2,
+     {"Bad variable: expected a name after '$'", "found ' '"}},
+    {"unterminatedBracedVariable", "a ${b;\n", 1,
+     {"Unterminated variable '${b;", "expected '}'"}},
+    {"badDirective", "a 1;\n# b 2;\n", 2,
+     {"Bad directive: expected a name after '#'"}},
+    {"invalidRegexKey", "a 1;\n\"(abc\" 2;\n", 2,
+     {"Invalid regular expression \"(abc\" as keyword"}},
+    {"anonymousList", "(a b);\n", 1,
+     {"Expected a keyword, found '('", "not supported"}},
+};
+
+
+// Names the case in gtest's output instead of dumping its bytes.
+void PrintTo(const syntaxCase& c, std::ostream* os)
+{
+    *os << c.name;
+}
+
+class dictionarySyntaxError : public testing::TestWithParam<syntaxCase> {};
+
+std::string caseName(const testing::TestParamInfo<syntaxCase>& info)
+{
+    return info.param.name;
+}
+
+} // End anonymous namespace
+
+
+TEST_P(dictionarySyntaxError, namesFileLineAndCause)
+{
+    const syntaxCase& c = GetParam();
+    const auto err = catchFatal([&]
+    {
+        dictionary::fromString(c.text, caseFile);
+    });
+    expectError(err, caseFile, c.line, c.parts);
+}
+
+INSTANTIATE_TEST_SUITE_P(table, dictionarySyntaxError,
+                         testing::ValuesIn(syntaxCases), caseName);
+
+
+namespace
+{
+
+struct valueCase
+{
+    const char* name;
+    const char* text;
+    std::function<void(const dictionary&)> get;
+    int line;
+    std::vector<std::string> parts;
+};
+
+const std::vector<valueCase> valueCases =
+{
+    {"labelOverflow", "a 1;\nn 3000000000;\n",
+     [](const dictionary& d){ d.get<label>("n"); }, 2,
+     {"Keyword 'n'", "integer 3000000000 is out of range for a 32-bit label",
+      "-2147483648 to 2147483647"}},
+    {"labelUnderflow", "n -2147483649;\n",
+     [](const dictionary& d){ d.get<label>("n"); }, 1,
+     {"integer -2147483649 is out of range for a 32-bit label"}},
+    {"int64Overflow", "n 99999999999999999999;\n",
+     [](const dictionary& d){ d.get<std::int64_t>("n"); }, 1,
+     {"integer 99999999999999999999 is out of range for a 64-bit integer"}},
+    {"floatForInteger", "a 1;\nnCorr 2.5;\n",
+     [](const dictionary& d){ d.get<label>("nCorr"); }, 2,
+     {"Keyword 'nCorr'", "expected an integer (a 32-bit label)",
+      "found floating-point number 2.5"}},
+    {"floatInIntegerList", "l\n(\n    1\n    2.0\n);\n",
+     [](const dictionary& d){ d.get<std::vector<label>>("l"); }, 4,
+     {"expected an integer", "found floating-point number 2.0"}},
+    {"trailingTokens", "a 1 2;\n",
+     [](const dictionary& d){ d.get<scalar>("a"); }, 1,
+     {"Keyword 'a'", "unexpected integer 2 after the value",
+      "expected ';' to end the entry"}},
+    {"forgottenSemicolon", "endTime 1\ndeltaT 0.1;\n",
+     [](const dictionary& d){ d.get<scalar>("endTime"); }, 2,
+     {"Keyword 'endTime'", "unexpected word 'deltaT' after the value"}},
+    {"wordForNumber", "a\n    abc;\n",
+     [](const dictionary& d){ d.get<scalar>("a"); }, 2,
+     {"Keyword 'a'", "expected a number", "found word 'abc'"}},
+    {"emptyForNumber", "x 1;\na;\n",
+     [](const dictionary& d){ d.get<scalar>("a"); }, 2,
+     {"expected a number", "found no value (an empty entry)"}},
+    {"badSwitch", "adjustTimeStep maybe;\n",
+     [](const dictionary& d){ d.get<bool>("adjustTimeStep"); }, 1,
+     {"expected a switch (true/false, on/off, yes/no",
+      "found word 'maybe'"}},
+    {"numberForSwitch", "a 1;\n",
+     [](const dictionary& d){ d.get<bool>("a"); }, 1,
+     {"expected a switch", "found integer 1"}},
+    {"numberForWord", "\ntype 3;\n",
+     [](const dictionary& d){ d.get<std::string>("type"); }, 2,
+     {"expected a word or a quoted string", "found integer 3"}},
+    {"listSizeMismatch", "a 1;\nl 3(1 2);\n",
+     [](const dictionary& d){ d.get<std::vector<scalar>>("l"); }, 2,
+     {"Keyword 'l'", "list size 3 given but 2 elements found"}},
+    {"notAList", "l 5;\n",
+     [](const dictionary& d){ d.get<std::vector<scalar>>("l"); }, 1,
+     {"expected a list of numbers ( ... )", "found integer 5"}},
+    {"vectorTooLong", "g (0 -9.81 0 1);\n",
+     [](const dictionary& d){ d.get<vec3>("g"); }, 1,
+     {"Keyword 'g'", "expected a vector of 2 or 3 components, found 4"}},
+    {"vectorTooShort", "g (1);\n",
+     [](const dictionary& d){ d.get<vec3>("g"); }, 1,
+     {"expected a vector of 2 or 3 components, found 1"}},
+    {"vectorBadComponent", "g\n(\n    0\n    x\n    0\n);\n",
+     [](const dictionary& d){ d.get<vec3>("g"); }, 4,
+     {"expected a number (vector component)", "found word 'x'"}},
+    {"scalarForVector", "g 9.81;\n",
+     [](const dictionary& d){ d.get<vec3>("g"); }, 1,
+     {"expected '(' to start a vector (x y z)",
+      "found floating-point number 9.81"}},
+    {"uniformListUnclosed", "l 3{1 2};\n",
+     [](const dictionary& d){ d.get<std::vector<scalar>>("l"); }, 1,
+     {"expected '}' to close the uniform list 3{...}", "found integer 2"}},
+    {"subDictForValue", "a\n{\n}\n",
+     [](const dictionary& d){ d.get<scalar>("a"); }, 1,
+     {"Keyword 'a'", "found a sub-dictionary"}},
+    {"wordNotAllowed", "device gpu;\n",
+     [](const dictionary& d){ d.getWord("device", {"cpu", "cuda"}); }, 1,
+     {"Keyword 'device'", "unknown value 'gpu'", "Did you mean 'cpu'?",
+      "Valid values are: (cpu cuda)"}},
+    {"notPositive", "\n\ndp -0.01;\n",
+     [](const dictionary& d){ d.getPositive("dp"); }, 3,
+     {"Keyword 'dp'", "expected a positive number, found -0.01"}},
+};
+
+
+void PrintTo(const valueCase& c, std::ostream* os)
+{
+    *os << c.name;
+}
+
+class dictionaryValueError : public testing::TestWithParam<valueCase> {};
+
+std::string valueCaseName(const testing::TestParamInfo<valueCase>& info)
+{
+    return info.param.name;
+}
+
+} // End anonymous namespace
+
+
+TEST_P(dictionaryValueError, namesFileLineAndCause)
+{
+    const valueCase& c = GetParam();
+    const auto d = dictionary::fromString(c.text, caseFile);
+    const auto err = catchFatal([&]{ c.get(d); });
+    expectError(err, caseFile, c.line, c.parts);
+}
+
+INSTANTIATE_TEST_SUITE_P(table, dictionaryValueError,
+                         testing::ValuesIn(valueCases), valueCaseName);
+
+
+// * * * * * * * * * * * * * * * * Includes * * * * * * * * * * * * * * * //
+
+TEST(dictionaryIncludeErrors, recursionIsCaught)
+{
+    const std::string dir = std::string(SPHVCPM_TEST_DATA)
+        + "/dictionaries/recursive";
+    const auto err = catchFatal([&]
+    {
+        dictionary::fromFile(dir + "/a");
+    });
+    // a includes b (line 3 of a), b includes a again at its line 3.
+    expectError(err, dir + "/b", 3, {"Recursive #include of \"a\"",
+                                       "recursive/a -> ", "recursive/b -> ",
+                                       "recursive/a"});
+}
+
+
+TEST(dictionaryIncludeErrors, selfIncludeAndDepthLimit)
+{
+    scratchDir dir("dictRecursion");
+    const auto self = dir.write("self", "a 1;\n#include \"self\"\n");
+    expectError(catchFatal([&]{ dictionary::fromFile(self); }),
+                self.string(), 2, {"Recursive #include of \"self\""});
+
+    // A long chain of distinct files stops at the depth limit.
+    for (int i = 0; i < 40; ++i)
+    {
+        dir.write("chain" + std::to_string(i),
+                  "x" + std::to_string(i) + " 1;\n#include \"chain"
+                  + std::to_string(i + 1) + "\"\n");
+    }
+    dir.write("chain40", "end 1;\n");
+    const auto err =
+        catchFatal([&]{ dictionary::fromFile(dir.path()/"chain0"); });
+    EXPECT_NE(err.message().find("nested more than 32 levels deep"),
+              std::string::npos) << err.message();
+    EXPECT_EQ(err.line(), 2);
+    EXPECT_NE(err.file().find("chain"), std::string::npos);
+
+    // A shorter chain is fine.
+    dir.write("chain5", "end 1;\n");
+    const auto d = dictionary::fromFile(dir.path()/"chain0");
+    EXPECT_EQ(d.keys(), (std::vector<std::string>
+        {"x0", "x1", "x2", "x3", "x4", "end"}));
+}
+
+
+TEST(dictionaryIncludeErrors, errorsInIncludedFileNameThatFile)
+{
+    scratchDir dir("dictIncludedError");
+    dir.write("constant/bad", "ok 1;\n\nbroken (1 2;\n");
+    const auto main = dir.write("system/main", "a 1;\n#include \"../constant/bad\"\n");
+    expectError(catchFatal([&]{ dictionary::fromFile(main); }),
+                (dir.path()/"system"/"../constant/bad").string(), 3,
+                {"expected ')' to close '(' opened at line 3"});
+}
+
+
+TEST(dictionaryIncludeErrors, includeEtcWithoutInstallation)
+{
+    const char* old = std::getenv("SPHVCPM_DIR");
+    const std::string saved = old ? old : "";
+    ::unsetenv("SPHVCPM_DIR");
+    const auto err = catchFatal([]
+    {
+        dictionary::fromString("\n#includeEtc \"caseDicts/x\"\n", "f");
+    });
+    if (old)
+    {
+        ::setenv("SPHVCPM_DIR", saved.c_str(), 1);
+    }
+    expectError(err, "f", 2, {"#includeEtc \"caseDicts/x\"",
+                              "SPHVCPM_DIR is not set"});
+}
+
+
+TEST(dictionaryIncludeErrors, missingFile)
+{
+    expectError
+    (
+        catchFatal([]{ dictionary::fromFile("/nonexistent/system/fvSchemes"); }),
+        "/nonexistent/system/fvSchemes", 0,
+        {"Cannot open dictionary file \"/nonexistent/system/fvSchemes\""}
+    );
+}
