@@ -8,6 +8,7 @@
 #include "dictionaryParser.H"
 #include "error.H"
 #include "foamFile.H"
+#include "tokeniser.H"
 
 #include <algorithm>
 #include <cerrno>
@@ -293,14 +294,15 @@ void dictionaryDetail::appendDictTokens(const dictionary& d,
         t.line = line;
         out.push_back(std::move(t));
     };
-    push(punctuationToken('{'));
     for (const auto& key : d.keys())
     {
         const entry& e = *d.findEntry(key);
         push(e.isPattern() ? stringToken(key) : wordToken(key));
         if (e.isDict())
         {
+            push(punctuationToken('{'));
             appendDictTokens(e.dict(), out, line);
+            push(punctuationToken('}'));
         }
         else
         {
@@ -311,7 +313,6 @@ void dictionaryDetail::appendDictTokens(const dictionary& d,
             push(punctuationToken(';'));
         }
     }
-    push(punctuationToken('}'));
 }
 
 
@@ -561,10 +562,20 @@ const entry* dictionary::findEntry(const std::string& key) const
     // Patterns last first: a later, more specific pattern wins.
     for (auto iter = entries_.rbegin(); iter != entries_.rend(); ++iter)
     {
-        if (iter->isPattern()
-         && dictionaryDetail::regexMatch(iter->keyword(), key))
+        try
         {
-            return &*iter;
+            if (iter->isPattern()
+             && dictionaryDetail::regexMatch(iter->keyword(), key))
+            {
+                return &*iter;
+            }
+        }
+        catch (const std::regex_error& err)
+        {
+            // Only an entry made in code can get here: the reader checks.
+            fatalIOError(iter->file(), iter->line(), "Invalid regular "
+                "expression \"" + iter->keyword() + "\" as keyword: "
+                + err.what(), iter->keyword());
         }
     }
     return nullptr;
@@ -664,8 +675,26 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
 }
 
 
+namespace
+{
+
+// A keyword made in code must read back as the same keyword.
+void checkKeyword(const dictionary& d, const std::string& key)
+{
+    if (!isValidWord(key))
+    {
+        d.fatal("Invalid keyword '" + key + "' for dictionary \"" + d.name()
+            + "\": a keyword is one word (no spaces, quotes, / ; { } $, and "
+            "not starting with a digit, '.', '-' or punctuation)", key);
+    }
+}
+
+} // End anonymous namespace
+
+
 void dictionary::setTokens(const std::string& key, std::vector<token> tokens)
 {
+    checkKeyword(*this, key);
     entry e(key, std::move(tokens), file_, 0);
     for (auto& x : entries_)
     {
@@ -681,6 +710,7 @@ void dictionary::setTokens(const std::string& key, std::vector<token> tokens)
 
 dictionary& dictionary::setSubDict(const std::string& key)
 {
+    checkKeyword(*this, key);
     for (auto& x : entries_)
     {
         if (x.keyword() == key)

@@ -25,6 +25,15 @@ namespace
 // distinct files (a cycle is caught directly).
 constexpr std::size_t maxIncludeDepth = 32;
 
+// Nesting limits that keep the recursive reader off the end of the stack
+// whatever the input.
+constexpr int maxDictDepth = 256;
+constexpr int maxNameDepth = 32;
+
+// A value grown past this by $macros (each doubling the last) is an error,
+// not an out-of-memory.
+constexpr std::size_t maxValueTokens = 10000000;
+
 const std::vector<std::string> supportedDirectives =
 {
     "#include", "#includeIfPresent", "#sinclude", "#includeEtc", "#remove",
@@ -79,11 +88,28 @@ std::string foundText(bool have, const token& t)
     return have ? dictionaryDetail::describe(t) : "end of file";
 }
 
-const entry* findRecursive(const dictionary* d, const std::string& key)
+// How a macro name is looked up in one dictionary.
+struct lookupMode
 {
-    for (; d; d = d->parent())
+    bool recursive;
+    bool patterns;
+};
+
+const entry* findHere(const dictionary* d, const std::string& key,
+                      bool patterns)
+{
+    const entry* e = d->findEntry(key);
+    // findEntry tries the exact keyword first: a pattern match means no
+    // literal one.
+    return e && (patterns || e->keyword() == key) ? e : nullptr;
+}
+
+const entry* findIn(const dictionary* d, const std::string& key,
+                    lookupMode mode)
+{
+    for (; d; d = mode.recursive ? d->parent() : nullptr)
     {
-        if (const entry* e = d->findEntry(key))
+        if (const entry* e = findHere(d, key, mode.patterns))
         {
             return e;
         }
@@ -91,22 +117,16 @@ const entry* findRecursive(const dictionary* d, const std::string& key)
     return nullptr;
 }
 
-const entry* findIn(const dictionary* d, const std::string& key,
-                    bool recursive)
-{
-    return recursive ? findRecursive(d, key) : d->findEntry(key);
-}
-
 // A key that may contain dots (alpha.water) or, failing that, ESI's
 // dot-scoped path a.b.c.
 const entry* findDotted(const dictionary* d, const std::string& key,
-                        bool recursive)
+                        lookupMode mode)
 {
     if (key.empty())
     {
         return nullptr;
     }
-    if (const entry* e = findIn(d, key, recursive))
+    if (const entry* e = findIn(d, key, mode))
     {
         return e;
     }
@@ -117,11 +137,11 @@ const entry* findDotted(const dictionary* d, const std::string& key,
         {
             continue;
         }
-        const entry* pe = findIn(d, key.substr(0, p), recursive);
+        const entry* pe = findIn(d, key.substr(0, p), mode);
         if (pe && pe->isDict())
         {
-            if (const entry* e =
-                findDotted(&pe->dict(), key.substr(p + 1), false))
+            if (const entry* e = findDotted(&pe->dict(), key.substr(p + 1),
+                                            {false, mode.patterns}))
             {
                 return e;
             }
@@ -277,6 +297,7 @@ void dictionaryParser::add(dictionary& dict, entry&& e, inputMode mode)
 
 const entry* dictionaryParser::findScoped(const dictionary& dict,
                                           const std::string& name,
+                                          bool patterns,
                                           const dictionary** searched)
 {
     const dictionary* cur = &dict;
@@ -331,7 +352,8 @@ const entry* dictionaryParser::findScoped(const dictionary& dict,
             }
             else if (parts[i] != ".")
             {
-                const entry* e = findIn(cur, parts[i], recursive);
+                const entry* e =
+                    findIn(cur, parts[i], {recursive, patterns});
                 if (!e || !e->isDict())
                 {
                     if (searched)
@@ -352,7 +374,7 @@ const entry* dictionaryParser::findScoped(const dictionary& dict,
         {
             return nullptr;
         }
-        return findIn(cur, parts.back(), recursive);
+        return findIn(cur, parts.back(), {recursive, patterns});
     }
 
     if (rest[0] == '.')
@@ -375,14 +397,14 @@ const entry* dictionaryParser::findScoped(const dictionary& dict,
         {
             *searched = cur;
         }
-        return findDotted(cur, rest.substr(n), false);
+        return findDotted(cur, rest.substr(n), {false, patterns});
     }
 
     if (searched)
     {
         *searched = cur;
     }
-    return findDotted(cur, rest, recursive);
+    return findDotted(cur, rest, {recursive, patterns});
 }
 
 
@@ -490,11 +512,19 @@ void dictionaryParser::readEntry(dictionary& dict, tokeniser& tk,
     if (next.isPunctuation('{'))
     {
         tk.read(next);
+        if (depth_ >= maxDictDepth)
+        {
+            fatalIOError(tk.file(), next.line, "Sub-dictionary '" + key
+                + "' nested more than " + std::to_string(maxDictDepth)
+                + " levels deep", key);
+        }
         auto sub = std::make_unique<dictionary>(dict.name_ + "/" + key);
         sub->file_ = tk.file();
         sub->line_ = next.line;
         sub->parent_ = &dict;
+        ++depth_;
         parseEntries(*sub, tk, &next, scope::subDict);
+        --depth_;
 
         if (where != scope::subDict && key == "FoamFile" && !isPattern)
         {
@@ -613,15 +643,35 @@ std::vector<token> dictionaryParser::expandValue
 {
     std::vector<token> out;
     out.reserve(raw.size());
+    int depth = 0;   // of ( and { in raw: the expanded tokens balance
     for (const token& t : raw)
     {
+        if (t.isPunctuation('(') || t.isPunctuation('{'))
+        {
+            ++depth;
+        }
+        else if (t.isPunctuation(')') || t.isPunctuation('}'))
+        {
+            --depth;
+        }
+
         if (t.type == token::kind::variable)
         {
             const resolved r = resolve(dict, t.text, file, t.line,
                 " in the value of keyword '" + key + "'");
             if (r.ent && r.ent->isDict())
             {
-                dictionaryDetail::appendDictTokens(r.ent->dict(), out, t.line);
+                if (depth == 0 && r.ent->dict().size())
+                {
+                    // Its entries' ';' would end this entry early.
+                    fatalIOError(file, t.line, "The sub-dictionary $"
+                        + t.text + " is expanded outside brackets in the "
+                        "value of keyword '" + key + "': write '" + key
+                        + " $" + t.text + ";' to copy it, or expand it "
+                        "inside { } or ( )", key);
+                }
+                dictionaryDetail::appendDictTokens(r.ent->dict(), out,
+                                                   t.line);
             }
             else
             {
@@ -630,6 +680,12 @@ std::vector<token> dictionaryParser::expandValue
                     x.line = t.line;
                     out.push_back(std::move(x));
                 }
+            }
+            if (out.size() > maxValueTokens)
+            {
+                fatalIOError(file, t.line, "The value of keyword '" + key
+                    + "' grows past " + std::to_string(maxValueTokens)
+                    + " tokens through $" + t.text, key);
             }
         }
         else if (t.type == token::kind::directive)
@@ -788,8 +844,8 @@ void dictionaryParser::readKeyVariable(dictionary& dict, tokeniser& tk,
 {
     token next;
     const bool haveNext = tk.peek(next);
-    const resolved r =
-        resolve(dict, t.text, tk.file(), t.line, " in keyword position");
+    const resolved r = resolve(dict, t.text, tk.file(), t.line,
+                               " in keyword position", true);
 
     if (haveNext && next.isPunctuation('{'))
     {
@@ -934,7 +990,8 @@ dictionaryParser::resolved dictionaryParser::resolve
     const std::string& var,
     const std::string& file,
     int line,
-    const std::string& context
+    const std::string& context,
+    bool patterns
 ) const
 {
     std::string name = var;
@@ -946,7 +1003,7 @@ dictionaryParser::resolved dictionaryParser::resolve
 
     resolved r;
     const dictionary* searched = &dict;
-    r.ent = findScoped(dict, name, &searched);
+    r.ent = findScoped(dict, name, patterns, &searched);
     if (r.ent)
     {
         return r;
@@ -1011,6 +1068,28 @@ std::string dictionaryParser::expandText
         }
     }
 
+    // ESI's <case>, <system> and <constant> tags: $FOAM_CASE when set,
+    // else the case holding the file being read (case/system/controlDict).
+    for (const char* tag : {"<case>", "<system>", "<constant>"})
+    {
+        const std::string t(tag);
+        if (text.compare(0, t.size(), t) == 0)
+        {
+            namespace fs = std::filesystem;
+            const char* env = std::getenv("FOAM_CASE");
+            fs::path caseDir = env ? fs::path(env)
+                : includeStack_.empty() ? fs::path(".")
+                : fs::path(includeStack_.front()).parent_path().parent_path();
+            if (t != "<case>")
+            {
+                caseDir /= t.substr(1, t.size() - 2);
+            }
+            out = caseDir.string();
+            i = t.size();
+            break;
+        }
+    }
+
     while (i < text.size())
     {
         if (text[i] != '$')
@@ -1040,8 +1119,15 @@ std::string dictionaryParser::expandText
                 fatalIOError(file, line, "Unterminated '${' in \"" + text
                     + "\"" + context + ": expected '}'");
             }
+            if (++textDepth_ > maxNameDepth)
+            {
+                fatalIOError(file, line, "Variable names nested more than "
+                    + std::to_string(maxNameDepth) + " levels deep in \""
+                    + text + "\"" + context);
+            }
             name = expandText(dict, text.substr(j + 1, k - j - 1), file,
                               line, context);
+            --textDepth_;
             i = k + 1;
         }
         else

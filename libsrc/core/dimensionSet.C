@@ -164,11 +164,12 @@ public:
                 {
                     throw unitError{"bad number '" + std::string(1, c) + "'"};
                 }
+                const std::size_t n = std::size_t(end - start);
                 pieces_.push_back
                 (
-                    {piece::kind::number, std::string(start, std::size_t(end - start)), v}
+                    {piece::kind::number, std::string(start, n), v}
                 );
-                i += std::size_t(end - start);
+                i += n;
             }
             else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_')
             {
@@ -215,6 +216,7 @@ public:
 private:
     std::vector<piece> pieces_;
     std::size_t i_ = 0;
+    int depth_ = 0;
 
     const piece& current() const { return pieces_[i_]; }
 
@@ -331,7 +333,12 @@ private:
         if (isOp("("))
         {
             ++i_;
+            if (++depth_ > 32)
+            {
+                throw unitError{"brackets nested too deep"};
+            }
             const dimensionSet d = product();
+            --depth_;
             if (!isOp(")"))
             {
                 throw unitError{"expected ')' in unit expression"};

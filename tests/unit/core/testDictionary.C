@@ -332,7 +332,7 @@ TEST(dictionaryMacros, spliceCopyAndKeyFromVariable)
         "copy $base;\n"
         "name patchA;\n"
         "$name { type wall; }\n"
-        "inline { x fixed $base; }\n"
+        "inline { x (fixed { $base; extra 1; }); }\n"
     );
     const auto& der = d.subDict("derived");
     EXPECT_EQ(der.keys(), (std::vector<std::string>{"a", "b", "sub"}));
@@ -347,13 +347,39 @@ TEST(dictionaryMacros, spliceCopyAndKeyFromVariable)
 
     EXPECT_EQ(d.subDict("patchA").get<std::string>("type"), "wall");
 
-    // A sub-dictionary inside a value expands to its braced tokens.
+    // A sub-dictionary inside a value expands to its entries, as in
+    // OpenFOAM (sets ( line { $setConfig; start ...; } )).
     const auto& x = tokensOf(d.subDict("inline"), "x");
-    ASSERT_EQ(x.size(), 15u);   // fixed { a 1 ; b 2 ; sub { c 3 ; } }
-    EXPECT_EQ(x[0].text, "fixed");
-    EXPECT_TRUE(x[1].isPunctuation('{'));
-    EXPECT_EQ(x[2].text, "a");
-    EXPECT_TRUE(x.back().isPunctuation('}'));
+    std::vector<std::string> text;
+    for (const auto& t : x)
+    {
+        text.push_back(t.str());
+    }
+    EXPECT_EQ(text, (std::vector<std::string>{"(", "fixed", "{", "a", "1",
+        ";", "b", "2", ";", "sub", "{", "c", "3", ";", "}", ";", "extra", "1",
+        ";", "}", ")"}));
+}
+
+
+TEST(dictionaryMacros, patternsMatchOnlyInKeywordPosition)
+{
+    // OpenFOAM's setConstraintTypes: $internalField in a value must not be
+    // captured by the ".*" pattern of boundaryField.
+    const auto d = dictionary::fromString
+    (
+        "internalField uniform 0;\n"
+        "boundaryField\n"
+        "{\n"
+        "    \".*\" { type zeroGradient; }\n"
+        "    processor { type processor; value $internalField; }\n"
+        "    \"(U|k)\" { solver PCG; }\n"
+        "    kFinal { $k; relTol 0; }\n"            // keyword position
+        "}\n"
+    );
+    const auto& b = d.subDict("boundaryField");
+    EXPECT_EQ(tokensOf(b.subDict("processor"), "value")[0].text, "uniform");
+    EXPECT_EQ(b.subDict("kFinal").get<std::string>("solver"), "PCG");
+    EXPECT_EQ(b.subDict("kFinal").get<label>("relTol"), 0);
 }
 
 
@@ -439,6 +465,29 @@ TEST(dictionaryDirectives, includeIntoSubDictAndVariableFileNames)
               (dir.path()/"system"/"../common/solver").string());
     EXPECT_EQ(p.lookupEntry("solver").line(), 1);
     EXPECT_EQ(p.lookupEntry("after").line(), 7);
+}
+
+
+TEST(dictionaryDirectives, includeCaseTags)
+{
+    scratchDir dir("dictCaseTags");
+    dir.write("case/system/common", "solver PCG;\n");
+    dir.write("case/constant/g", "g (0 -9.81 0);\n");
+    const auto file = dir.write
+    (
+        "case/system/fvSolution",
+        "#include \"<system>/common\"\n#include \"<constant>/g\"\n"
+    );
+    const char* foamCase = std::getenv("FOAM_CASE");
+    const std::string saved = foamCase ? foamCase : "";
+    ::unsetenv("FOAM_CASE");
+    const auto d = dictionary::fromFile(file);
+    if (foamCase)
+    {
+        ::setenv("FOAM_CASE", saved.c_str(), 1);
+    }
+    EXPECT_EQ(d.get<std::string>("solver"), "PCG");
+    EXPECT_EQ(d.get<vec3>("g"), (vec3{0, -9.81, 0}));
 }
 
 

@@ -11,6 +11,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
+#include <random>
+#include <sstream>
+
 using namespace sphvcpm;
 using test::catchFatal;
 using test::expectError;
@@ -124,6 +129,11 @@ const std::vector<syntaxCase> syntaxCases =
     {"parentOfTopLevel", "a $../b;\n", 1, {"Undefined variable '$../b'"}},
     {"spliceValue", "a 1;\nb\n{\n    $a;\n}\n", 4,
      {"Cannot splice '$a'", "it is not a sub-dictionary"}},
+    {"dictExpandedOutsideBrackets", "a { b 1; }\nc x $a;\n", 2,
+     {"The sub-dictionary $a is expanded outside brackets in the value of "
+      "keyword 'c'", "write 'c $a;' to copy it"}},
+    {"patternNotUsedInValue", "\".*\" 1;\nb $a;\n", 2,
+     {"Undefined variable '$a'"}},
     {"keyFromDictVariable", "a { }\n$a { b 1; }\n", 2,
      {"'$a' used as a keyword must name a single word",
       "it is a sub-dictionary"}},
@@ -337,7 +347,8 @@ TEST(dictionaryIncludeErrors, errorsInIncludedFileNameThatFile)
 {
     scratchDir dir("dictIncludedError");
     dir.write("constant/bad", "ok 1;\n\nbroken (1 2;\n");
-    const auto main = dir.write("system/main", "a 1;\n#include \"../constant/bad\"\n");
+    const auto main =
+        dir.write("system/main", "a 1;\n#include \"../constant/bad\"\n");
     expectError(catchFatal([&]{ dictionary::fromFile(main); }),
                 (dir.path()/"system"/"../constant/bad").string(), 3,
                 {"expected ')' to close '(' opened at line 3"});
@@ -366,8 +377,135 @@ TEST(dictionaryIncludeErrors, missingFile)
 {
     expectError
     (
-        catchFatal([]{ dictionary::fromFile("/nonexistent/system/fvSchemes"); }),
+        catchFatal([]
+        {
+            dictionary::fromFile("/nonexistent/system/fvSchemes");
+        }),
         "/nonexistent/system/fvSchemes", 0,
         {"Cannot open dictionary file \"/nonexistent/system/fvSchemes\""}
     );
+}
+
+
+// * * * * * * * * * * * * * * * * Limits * * * * * * * * * * * * * * * * //
+
+TEST(dictionaryLimits, deepNestingIsAnErrorNotACrash)
+{
+    std::string text;
+    for (int i = 0; i < 100000; ++i)
+    {
+        text += "a {\n";
+    }
+    expectError(catchFatal([&]{ dictionary::fromString(text, "deep"); }),
+                "deep", 257, {"Sub-dictionary 'a' nested more than 256 "
+                              "levels deep"});
+
+    // Within the limit nesting is fine.
+    std::string ok = "x 1;\n";
+    for (int i = 0; i < 100; ++i)
+    {
+        ok += "a { ";
+    }
+    ok += "v $x;";
+    for (int i = 0; i < 100; ++i)
+    {
+        ok += " }";
+    }
+    const auto d = dictionary::fromString(ok);
+    const dictionary* cur = &d;
+    for (int i = 0; i < 100; ++i)
+    {
+        cur = &cur->subDict("a");
+    }
+    EXPECT_EQ(cur->get<label>("v"), 1);
+
+    const std::string units = "x [" + std::string(1000, '(') + "m"
+        + std::string(1000, ')') + "] 1;";
+    expectError
+    (
+        catchFatal([&]{ dictionary::fromString(units, "u").get<scalar>("x"); }),
+        "u", 1, {"brackets nested too deep"}
+    );
+}
+
+
+TEST(dictionaryLimits, keywordsMadeInCodeMustBeWords)
+{
+    dictionary d("built");
+    for (const std::string bad : {"two words", "", "1abc", "a;b", "\"q\"",
+                                  "a/b", "{"})
+    {
+        expectError(catchFatal([&]{ d.set(bad, label(1)); }), "built", 0,
+                    {"Invalid keyword '" + bad + "'"});
+        expectError(catchFatal([&]{ d.setSubDict(bad); }), "built", 0,
+                    {"Invalid keyword '" + bad + "'"});
+    }
+    d.set("div(phi,U)", "Gauss linear");
+    d.set("alpha.water", 0.5);
+    EXPECT_EQ(d.keys(), (std::vector<std::string>{"div(phi,U)",
+                                                  "alpha.water"}));
+}
+
+
+// Random edits of a real file: every result either reads (and then writes
+// and reads back equal) or stops with a FatalError inside the text.
+TEST(dictionaryLimits, mutatedInputsReadOrFailCleanly)
+{
+    std::ifstream is(std::string(SPHVCPM_TEST_DATA)
+        + "/dictionaries/system/fvSolution");
+    std::stringstream ss;
+    ss << is.rdbuf();
+    const std::string base = ss.str()
+        + "vals (1 2.5 -3e-2 \"s\\\"q\" [m/s]);\nw 3{(0 0 1)};\n"
+          "code #{ a; #};\nref $PISO/nCorrectors;\nc { $relaxationFactors; }\n";
+    ASSERT_GT(base.size(), 500u);
+
+    const std::string alphabet = "{}();[]\"'#$/*\\\n -.0123456789eab:!";
+    std::mt19937 rng(20240611);
+    int readOk = 0;
+    int failed = 0;
+    for (int i = 0; i < 2000; ++i)
+    {
+        std::string text = base;
+        const int edits = 1 + int(rng() % 4);
+        for (int k = 0; k < edits; ++k)
+        {
+            const std::size_t pos = rng() % text.size();
+            const char c = alphabet[rng() % alphabet.size()];
+            switch (rng() % 3)
+            {
+                case 0: text.erase(pos, 1); break;
+                case 1: text.insert(pos, 1, c); break;
+                default: text[pos] = c; break;
+            }
+        }
+        const int lines =
+            1 + int(std::count(text.begin(), text.end(), '\n'));
+        try
+        {
+            const auto d = dictionary::fromString(text, "mutated");
+            std::ostringstream os;
+            d.write(os);
+            const auto back = dictionary::fromString(os.str(), "written");
+            std::ostringstream again;
+            back.write(again);
+            EXPECT_TRUE(back == d) << "written:\n" << os.str()
+                << "\nread back and written:\n" << again.str();
+            ++readOk;
+        }
+        catch (const FatalError& err)
+        {
+            EXPECT_EQ(err.file(), "mutated") << err.what();
+            EXPECT_GE(err.line(), 1) << err.what();
+            EXPECT_LE(err.line(), lines) << err.what();
+            EXPECT_FALSE(err.message().empty());
+            ++failed;
+        }
+        if (HasFailure())
+        {
+            break;
+        }
+    }
+    EXPECT_GT(readOk, 100);
+    EXPECT_GT(failed, 100);
 }
