@@ -481,12 +481,23 @@ dictionary& dictionary::operator=(dictionary&& d) noexcept
         std::vector<entry> entries = std::move(d.entries_);
         std::unique_ptr<dictionary> header = std::move(d.header_);
 
-        name_ = std::move(name);
+        // A sub-dictionary keeps its place (parent and scoped name); a
+        // top-level one takes the name of what it is given.
+        if (!parent_)
+        {
+            name_ = std::move(name);
+        }
         file_ = std::move(file);
         line_ = line;
         entries_ = std::move(entries);
         header_ = std::move(header);
-        reparent();
+        for (auto& e : entries_)
+        {
+            if (e.isDict())
+            {
+                dictionaryParser::adopt(e.dict(), *this, e.keyword());
+            }
+        }
     }
     return *this;
 }

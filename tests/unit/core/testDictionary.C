@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <sys/wait.h>
 
 using namespace sphvcpm;
 using test::catchFatal;
@@ -941,6 +942,15 @@ TEST(dictionaryRoundTrip, writeFileReadFile)
     dictionary moved = std::move(copy);
     EXPECT_EQ(moved.subDict("PISO").parent(), &moved);
     EXPECT_EQ(moved.subDict("PISO").get<label>("nCorrectors"), 3);
+    // Assigning to a sub-dictionary keeps its place and scoped name.
+    moved.subDict("PISO") = dictionary::fromString("n 1; s { m 2; }");
+    EXPECT_EQ(moved.subDict("PISO").keys(),
+              (std::vector<std::string>{"n", "s"}));
+    EXPECT_EQ(moved.subDict("PISO").parent(), &moved);
+    EXPECT_EQ(moved.subDict("PISO").subDict("s").name(),
+              moved.name() + "/PISO/s");
+    EXPECT_EQ(moved.subDict("PISO").subDict("s").parent(),
+              &moved.subDict("PISO"));
     // Assigning a dictionary its own sub-dictionary.
     moved = moved.subDict("solvers");
     EXPECT_TRUE(moved.isDict("pFinal"));
