@@ -233,7 +233,9 @@ struct indexHash
 
     SPHVCPM_HD void operator()(const label i) const
     {
-        y[i] = (i*7919) % 1000 - 500;
+        // Kept below 2^31: signed overflow is undefined and host and
+        // device compilers resolve it differently.
+        y[i] = ((i % 7919)*31) % 1000 - 500;
     }
 };
 
