@@ -1,0 +1,422 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// Time directories: finding them, writing one atomically and reading it
+// back (the field files themselves are in fieldIO.C).
+//
+// A write goes to the hidden sibling <case>/.<time>.tmp.<pid>, every file
+// and directory is synced, and only then is it renamed to <case>/<time>.
+// An existing <time> is swapped out atomically (renameat2 RENAME_EXCHANGE,
+// or two renames through .<time>.old.<pid> where the file system lacks it)
+// and deleted afterwards. A crash leaves at worst a hidden directory, which
+// findTimes never lists.
+
+#include "timeDirectory.H"
+#include "dictionary.H"
+#include "error.H"
+#include "particleFiles.H"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <set>
+#include <unistd.h>
+
+namespace sphvcpm
+{
+
+namespace fs = std::filesystem;
+
+// * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Files in a body directory that are not fields: hidden files and editor
+// backups.
+bool isFieldFileName(const std::string& name)
+{
+    return !name.empty() && name[0] != '.' && name.back() != '~'
+        && name != "bodyProperties";
+}
+
+
+void checkTimeName(const std::string& name)
+{
+    scalar t = 0;
+    if (!parseTimeName(name, t))
+    {
+        fatalError("Invalid time name '" + name
+            + "': a time directory is named by its time (0, 0.05, 1e-05)");
+    }
+}
+
+
+std::string listTimes(const std::vector<timeInstant>& times)
+{
+    std::string s;
+    for (const auto& t : times)
+    {
+        s += " " + t.name;
+    }
+    return s.empty() ? std::string(" (none)") : s;
+}
+
+
+void writeBodyProperties(const fs::path& file, const particleBody& body,
+                         const std::string& location)
+{
+    dictionary dict;
+    dict.set("type", bodyTypeName(body.type()));
+    dict.set<label>("nDimensions", body.nDimensions());
+    dict.set<scalar>("dp", body.dp());
+    dict.writeFile(file, location);
+    particleFiles::syncPath(file);
+}
+
+
+void writeTimeDict(const fs::path& file, const timeState& state,
+                   const std::string& location)
+{
+    // The entries of OpenFOAM's TimeIO.C writeTimeDict.
+    dictionary dict;
+    dict.set<scalar>("beginTime", state.beginTime);
+    dict.set<scalar>("value", state.value);
+    dict.set<std::string>("name", state.name);
+    dict.set<label>("index", state.index);
+    dict.set<scalar>("deltaT", state.deltaT);
+    dict.set<scalar>("deltaT0", state.deltaT0);
+    dict.writeFile(file, location);
+    particleFiles::syncPath(file);
+}
+
+
+particleBody readBodyProperties(const fs::path& dir)
+{
+    const fs::path file = dir/"bodyProperties";
+    if (!fs::is_regular_file(file))
+    {
+        fatalIOError(file.string(), 0, "Missing bodyProperties in \""
+            + dir.string() + "\": every body directory of a time directory "
+            "has one (type, nDimensions, dp)");
+    }
+    const dictionary dict = dictionary::fromFile(file);
+    dict.checkKeywords({"type", "nDimensions", "dp"});
+    const bodyType type =
+        bodyTypeFromName(dict.getWord("type", {"fluid", "wall", "solid"}));
+    const label nDim = dict.get<label>("nDimensions");
+    if (nDim != 2 && nDim != 3)
+    {
+        dict.fatalAt("nDimensions", "Keyword 'nDimensions': expected 2 or 3, "
+            "found " + std::to_string(nDim));
+    }
+    const scalar dp = dict.getPositive("dp");
+    return particleBody(dir.filename().string(), type, int(nDim), dp);
+}
+
+
+particleBody readBody(const fs::path& dir)
+{
+    particleBody body = readBodyProperties(dir);
+
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(dir))
+    {
+        const std::string name = e.path().filename().string();
+        if (isFieldFileName(name))
+        {
+            if (!e.is_regular_file())
+            {
+                fatalIOError(e.path().string(), 0, "\"" + e.path().string()
+                    + "\" in body directory \"" + dir.string()
+                    + "\" is not a field file");
+            }
+            files.push_back(name);
+        }
+    }
+    std::sort(files.begin(), files.end());
+
+    // readField checks each size against the body's; an empty first field
+    // would let a later one resize the body, so check that case here.
+    label size = -1;
+    for (const auto& name : files)
+    {
+        readField(dir/name, body);
+        if (size >= 0 && body.size() != size)
+        {
+            fatalIOError((dir/name).string(), 0, "Field '" + name + "' has "
+                + std::to_string(body.size()) + " values but body '"
+                + body.name() + "' has " + std::to_string(size)
+                + " particles: all fields of a body must have the same size");
+        }
+        size = body.size();
+    }
+    for (const char* required : {"position", "id"})
+    {
+        if (!std::binary_search(files.begin(), files.end(), required))
+        {
+            fatalIOError((dir/required).string(), 0, "Missing field file '"
+                + std::string(required) + "' of body '" + body.name()
+                + "': every body has position and id");
+        }
+    }
+    return body;
+}
+
+
+// Swaps two existing paths atomically; false where unsupported.
+bool exchangePaths(const fs::path& a, const fs::path& b)
+{
+#ifdef RENAME_EXCHANGE
+    if (::renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(),
+                    RENAME_EXCHANGE) == 0)
+    {
+        return true;
+    }
+#endif
+    (void)a;
+    (void)b;
+    return false;
+}
+
+
+void renameOrFail(const fs::path& from, const fs::path& to)
+{
+    std::error_code ec;
+    fs::rename(from, to, ec);
+    if (ec)
+    {
+        fatalError("Cannot rename \"" + from.string() + "\" to \""
+            + to.string() + "\": " + ec.message());
+    }
+}
+
+} // End anonymous namespace
+
+
+writeFormat writeFormatFromName(const std::string& name)
+{
+    if (name == "ascii")
+    {
+        return writeFormat::ascii;
+    }
+    if (name == "binary")
+    {
+        return writeFormat::binary;
+    }
+    fatalError("Unknown writeFormat '" + name
+        + "'\nValid writeFormats are: ascii binary");
+}
+
+
+// * * * * * * * * * * * * * * * Finding times * * * * * * * * * * * * * * //
+
+std::vector<timeInstant> findTimes(const fs::path& caseDir)
+{
+    std::error_code ec;
+    if (!fs::is_directory(caseDir, ec))
+    {
+        fatalError("Cannot find case directory \"" + caseDir.string() + "\"");
+    }
+    std::vector<timeInstant> times;
+    for (const auto& e : fs::directory_iterator(caseDir))
+    {
+        const std::string name = e.path().filename().string();
+        scalar t = 0;
+        // Hidden: a write in progress or one that was interrupted.
+        if (name[0] != '.' && e.is_directory() && parseTimeName(name, t))
+        {
+            times.push_back({t, name});
+        }
+    }
+    std::sort(times.begin(), times.end(),
+        [](const timeInstant& a, const timeInstant& b)
+        {
+            return a.value < b.value || (a.value == b.value && a.name < b.name);
+        });
+    return times;
+}
+
+
+// * * * * * * * * * * * * * * * * * Writing * * * * * * * * * * * * * * * //
+
+void writeTimeDirectory(const fs::path& caseDir, const timeState& state,
+                        const std::vector<particleBody>& bodies,
+                        writeFormat format, int precision)
+{
+    checkTimeName(state.name);
+    std::set<std::string> names;
+    for (const auto& body : bodies)
+    {
+        if (!names.insert(body.name()).second)
+        {
+            fatalError("Two bodies are called '" + body.name()
+                + "': body names must be unique in a time directory");
+        }
+    }
+
+    std::error_code ec;
+    fs::create_directories(caseDir, ec);
+    if (ec)
+    {
+        fatalError("Cannot create case directory \"" + caseDir.string()
+            + "\": " + ec.message());
+    }
+    const std::string pid = std::to_string(::getpid());
+    const fs::path target = caseDir/state.name;
+    const fs::path tmp = caseDir/("." + state.name + ".tmp." + pid);
+    // Left by an earlier run that had our pid and was killed.
+    fs::remove_all(tmp, ec);
+
+    try
+    {
+        fs::create_directory(tmp);
+        for (const auto& body : bodies)
+        {
+            const fs::path dir = tmp/body.name();
+            const std::string location = state.name + "/" + body.name();
+            fs::create_directory(dir);
+            writeBodyProperties(dir/"bodyProperties", body, location);
+            for (const auto& field : body.fieldNames())
+            {
+                writeField(dir/field, body, field, format, precision,
+                           location);
+            }
+            particleFiles::syncPath(dir);
+        }
+        fs::create_directory(tmp/"uniform");
+        writeTimeDict(tmp/"uniform"/"time", state, state.name + "/uniform");
+        particleFiles::syncPath(tmp/"uniform");
+        particleFiles::syncPath(tmp);
+
+        if (fs::exists(target))
+        {
+            if (exchangePaths(tmp, target))
+            {
+                // tmp now holds the old directory.
+                particleFiles::syncPath(caseDir);
+                fs::remove_all(tmp);
+                return;
+            }
+            const fs::path old = caseDir/("." + state.name + ".old." + pid);
+            fs::remove_all(old);
+            renameOrFail(target, old);
+            try
+            {
+                renameOrFail(tmp, target);
+            }
+            catch (...)
+            {
+                fs::rename(old, target, ec);
+                throw;
+            }
+            particleFiles::syncPath(caseDir);
+            fs::remove_all(old);
+        }
+        else
+        {
+            renameOrFail(tmp, target);
+            particleFiles::syncPath(caseDir);
+        }
+    }
+    catch (const fs::filesystem_error& err)
+    {
+        fs::remove_all(tmp, ec);
+        fatalError("Cannot write time directory \"" + target.string()
+            + "\": " + err.what());
+    }
+    catch (...)
+    {
+        fs::remove_all(tmp, ec);
+        throw;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * Reading * * * * * * * * * * * * * * * //
+
+std::vector<particleBody> readTimeDirectory(const fs::path& caseDir,
+                                            const std::string& timeName)
+{
+    const fs::path dir = caseDir/timeName;
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+    {
+        fatalError("Cannot find time directory \"" + dir.string()
+            + "\"\nTimes in the case:" + listTimes(findTimes(caseDir)));
+    }
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir))
+    {
+        const std::string name = e.path().filename().string();
+        if (name[0] != '.' && name != "uniform" && e.is_directory())
+        {
+            names.push_back(name);
+        }
+    }
+    std::sort(names.begin(), names.end());
+
+    std::vector<particleBody> bodies;
+    bodies.reserve(names.size());
+    for (const auto& name : names)
+    {
+        bodies.push_back(readBody(dir/name));
+    }
+    return bodies;
+}
+
+
+timeState readTimeState(const fs::path& caseDir, const std::string& timeName)
+{
+    const fs::path dir = caseDir/timeName;
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+    {
+        fatalError("Cannot find time directory \"" + dir.string()
+            + "\"\nTimes in the case:" + listTimes(findTimes(caseDir)));
+    }
+    timeState state;
+    state.name = timeName;
+    const fs::path file = dir/"uniform"/"time";
+    if (!fs::exists(file))
+    {
+        if (!parseTimeName(timeName, state.value))
+        {
+            fatalError("Time directory \"" + dir.string() + "\" has no "
+                "uniform/time and its name '" + timeName
+                + "' is not a time");
+        }
+        return state;
+    }
+
+    const dictionary dict = dictionary::fromFile(file);
+    state.value = dict.get<scalar>("value");
+    state.index = dict.get<label>("index");
+    state.deltaT = dict.get<scalar>("deltaT");
+    state.deltaT0 = dict.getOrDefault<scalar>("deltaT0", state.deltaT);
+    state.beginTime = dict.getOrDefault<scalar>("beginTime", 0);
+    const auto check = [&dict](const char* key, scalar v, bool nonNegative)
+    {
+        if (!std::isfinite(v) || (nonNegative && v < 0))
+        {
+            dict.fatalAt(key, "Keyword '" + std::string(key)
+                + "': expected a finite" + (nonNegative ? " non-negative" : "")
+                + " number");
+        }
+    };
+    check("value", state.value, false);
+    check("beginTime", state.beginTime, false);
+    check("deltaT", state.deltaT, true);
+    check("deltaT0", state.deltaT0, true);
+    if (state.index < 0)
+    {
+        dict.fatalAt("index", "Keyword 'index': expected a time-step index "
+            ">= 0, found " + std::to_string(state.index));
+    }
+    return state;
+}
+
+} // End namespace sphvcpm
