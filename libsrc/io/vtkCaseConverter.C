@@ -1,0 +1,205 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// Conversion of a case's time directories to VTK (see vtkCaseConverter.H).
+
+#include "vtkCaseConverter.H"
+#include "error.H"
+#include "vtpWriter.H"
+
+#include <algorithm>
+#include <set>
+
+namespace sphvcpm
+{
+
+vtkCaseConverter::vtkCaseConverter(std::filesystem::path caseDir)
+:
+    caseDir_(std::move(caseDir)),
+    times_(findTimes(caseDir_))
+{
+    std::map<label, std::string> byIndex;
+    for (const auto& t : times_)
+    {
+        const timeState state = readTimeState(caseDir_, t.name);
+        auto [it, fresh] = byIndex.emplace(state.index, t.name);
+        if (!fresh)
+        {
+            fatalError("Times " + it->second + " and " + t.name
+                + " of case " + caseDir_.string() + " have the same time"
+                " index " + std::to_string(state.index)
+                + " (from <time>/uniform/time, 0 without one), so their VTK"
+                  " files would have the same name.\nRemove or rename one"
+                  " of the two time directories.");
+        }
+        states_[t.name] = state;
+    }
+}
+
+
+void vtkCaseConverter::restrictFields(const std::vector<std::string>& fields,
+                                      const std::vector<timeInstant>& times)
+{
+    // Field files on disk are enough to tell names apart: nothing is read.
+    std::set<std::string> present;
+    for (const auto& t : times)
+    {
+        std::error_code ec;
+        for (const auto& bodyDir :
+             std::filesystem::directory_iterator(caseDir_/t.name, ec))
+        {
+            if (!std::filesystem::is_regular_file(
+                    bodyDir.path()/"bodyProperties"))
+            {
+                continue;
+            }
+            for (const auto& f :
+                 std::filesystem::directory_iterator(bodyDir.path(), ec))
+            {
+                const std::string name = f.path().filename().string();
+                if (f.is_regular_file() && name != "bodyProperties"
+                 && name[0] != '.')
+                {
+                    present.insert(name);
+                }
+            }
+        }
+    }
+
+    for (const auto& name : fields)
+    {
+        if (!present.count(name))
+        {
+            std::string timeList, fieldList;
+            for (const auto& t : times)
+            {
+                timeList += " " + t.name;
+            }
+            for (const auto& f : present)
+            {
+                fieldList += " " + f;
+            }
+            fatalError("Field '" + name + "' given by -fields is in no body"
+                " of the selected times (" + timeList.substr(1) + ").\n"
+                "Fields there:" + fieldList);
+        }
+    }
+
+    restricted_ = true;
+    fields_ = fields;
+    if (std::find(fields_.begin(), fields_.end(), "id") == fields_.end())
+    {
+        fields_.push_back("id");
+    }
+}
+
+
+std::filesystem::path vtkCaseConverter::vtpName(const std::string& body,
+                                                label index)
+{
+    return std::filesystem::path(body)
+        /(body + "_" + std::to_string(index) + ".vtp");
+}
+
+
+std::vector<vtkCaseConverter::bodyOutput> vtkCaseConverter::convert(
+    const timeInstant& time)
+{
+    const auto state = states_.find(time.name);
+    if (state == states_.end())
+    {
+        fatalError("Time " + time.name + " is not a time directory of case "
+            + caseDir_.string());
+    }
+
+    std::vector<bodyOutput> outputs;
+    for (const particleBody& body : readTimeDirectory(caseDir_, time.name))
+    {
+        const std::filesystem::path name =
+            vtpName(body.name(), state->second.index);
+        std::filesystem::create_directories(vtkDir()/body.name());
+        writeVtp(vtkDir()/name, body,
+                 restricted_ ? fields_ : std::vector<std::string>(),
+                 state->second.value);
+
+        outputs.push_back({body.name(), body.size(), "VTK"/name});
+        if (!std::binary_search(bodies_.begin(), bodies_.end(), body.name()))
+        {
+            bodies_.insert(std::upper_bound(bodies_.begin(), bodies_.end(),
+                body.name()), body.name());
+        }
+    }
+    return outputs;
+}
+
+
+void vtkCaseConverter::writeSeries() const
+{
+    for (const auto& body : bodies_)
+    {
+        std::vector<vtpSeriesEntry> entries;
+        for (const auto& t : times_)
+        {
+            const timeState& state = states_.at(t.name);
+            const std::filesystem::path name = vtpName(body, state.index);
+            if (std::filesystem::exists(vtkDir()/name))
+            {
+                entries.push_back({name.generic_string(), state.value});
+            }
+        }
+        writeVtpSeries(vtkDir()/(body + ".vtp.series"), entries);
+    }
+}
+
+
+std::vector<std::string> vtkCaseConverter::parseWordList(
+    const std::string& text, const std::string& option)
+{
+    std::string s = text;
+    const auto first = s.find_first_not_of(" \t\n");
+    const auto last = s.find_last_not_of(" \t\n");
+    s = first == std::string::npos ? "" : s.substr(first, last - first + 1);
+    if (!s.empty() && s.front() == '(')
+    {
+        if (s.back() != ')')
+        {
+            fatalError("Invalid " + option + " '" + text
+                + "': missing ')'. Expected a list of names, e.g. "
+                + option + " '(rho U)'");
+        }
+        s = s.substr(1, s.size() - 2);
+    }
+
+    std::vector<std::string> words;
+    std::string word;
+    auto flush = [&]()
+    {
+        if (!word.empty())
+        {
+            words.push_back(word);
+            word.clear();
+        }
+    };
+    for (char c : s)
+    {
+        if (c == ' ' || c == '\t' || c == '\n' || c == ',')
+        {
+            flush();
+        }
+        else if (c == '(' || c == ')' || c == '"' || c == '\''
+              || c == ';' || c == '{' || c == '}')
+        {
+            fatalError("Invalid " + option + " '" + text + "': unexpected '"
+                + std::string(1, c) + "'. Expected a list of names, e.g. "
+                + option + " '(rho U)'");
+        }
+        else
+        {
+            word += c;
+        }
+    }
+    flush();
+    return words;
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,355 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// VTK XML PolyData and ParaView series writers (see vtpWriter.H).
+
+#include "vtpWriter.H"
+#include "error.H"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <type_traits>
+#include <unistd.h>
+
+namespace sphvcpm
+{
+
+// Values go to the file straight from the fields' memory, so the host byte
+// order and the field layouts must be what the XML header announces.
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+              "vtpWriter writes host memory as LittleEndian");
+static_assert(sizeof(scalar) == 8, "scalar fields are written as Float64");
+static_assert(sizeof(label) == 4, "label fields are written as Int32");
+static_assert(sizeof(vec3) == 3*sizeof(scalar)
+           && std::is_standard_layout<vec3>::value,
+              "vector fields are written as 3 packed Float64");
+
+namespace
+{
+
+// Elements per chunk where values are generated rather than copied (1 MiB
+// of doubles), so memory stays flat whatever the body size.
+constexpr std::size_t chunkSize = 131072;
+
+// Writes through a hidden temporary file in the target directory and
+// renames it into place: rename() within one file system is atomic.
+void writeAtomic(const std::filesystem::path& file,
+                 const std::function<void(std::ostream&)>& write)
+{
+    const std::filesystem::path tmp = file.parent_path()
+        / ("." + file.filename().string() + ".tmp"
+         + std::to_string(::getpid()));
+    try
+    {
+        {
+            std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
+            if (!os)
+            {
+                fatalError("Cannot open " + tmp.string() + " for writing: "
+                    + std::strerror(errno));
+            }
+            write(os);
+            os.flush();
+            if (!os)
+            {
+                fatalError("Error writing " + tmp.string() + ": "
+                    + std::strerror(errno) + " (disk full?)");
+            }
+        }
+        std::error_code ec;
+        std::filesystem::rename(tmp, file, ec);
+        if (ec)
+        {
+            fatalError("Cannot rename " + tmp.string() + " to "
+                + file.string() + ": " + ec.message());
+        }
+    }
+    catch (...)
+    {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw;
+    }
+}
+
+std::string xmlEscape(const std::string& s)
+{
+    std::string out;
+    for (char c : s)
+    {
+        switch (c)
+        {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+// One DataArray: its header attributes and how to write its values.
+struct dataArray
+{
+    std::string name;
+    std::string type;         // Float64 | Int32 | Int64
+    int nComponents;
+    std::uint64_t nBytes;
+    std::function<void(std::ostream&)> writeValues;
+    std::uint64_t offset = 0; // from the first byte after '_'
+};
+
+void writeRaw(std::ostream& os, const void* data, std::size_t nBytes)
+{
+    if (nBytes > 0)
+    {
+        os.write(static_cast<const char*>(data), std::streamsize(nBytes));
+    }
+}
+
+template<class T>
+dataArray directArray(const std::string& name, const std::string& type,
+                      int nComponents, const std::vector<T>& values)
+{
+    const std::uint64_t nBytes = values.size()*sizeof(T);
+    return {name, type, nComponents, nBytes,
+        [&values, nBytes](std::ostream& os)
+        {
+            writeRaw(os, values.data(), nBytes);
+        }};
+}
+
+void writeDataArrayTag(std::ostream& os, const dataArray& a,
+                       const std::string& indent)
+{
+    os << indent << "<DataArray type=\"" << a.type << "\" Name=\""
+       << xmlEscape(a.name) << "\" NumberOfComponents=\"" << a.nComponents
+       << "\" format=\"appended\" offset=\"" << a.offset << "\"/>\n";
+}
+
+} // End anonymous namespace
+
+
+std::string exactNumber(scalar x)
+{
+    char buf[64];
+    const auto result = std::to_chars(buf, buf + sizeof(buf), x);
+    return std::string(buf, result.ptr);
+}
+
+
+void writeVtp(const std::filesystem::path& file, const particleBody& body,
+              const std::vector<std::string>& fields, scalar time)
+{
+    const std::uint64_t n = std::uint64_t(body.size());
+    const bool planar = body.nDimensions() == 2;
+
+    std::vector<std::string> names = fields;
+    if (names.empty())
+    {
+        names = body.fieldNames();
+    }
+
+    std::vector<dataArray> pointData;
+    for (const auto& name : names)
+    {
+        if (name == "position" || !body.hasField(name))
+        {
+            continue;
+        }
+        bool duplicate = false;
+        for (const auto& a : pointData)
+        {
+            duplicate = duplicate || a.name == name;
+        }
+        if (duplicate)
+        {
+            continue;
+        }
+        switch (body.kindOf(name))
+        {
+            case fieldKind::scalarField:
+                pointData.push_back(directArray(name, "Float64", 1,
+                    body.scalarField(name)));
+                break;
+            case fieldKind::vectorField:
+                pointData.push_back(directArray(name, "Float64", 3,
+                    body.vectorField(name)));
+                break;
+            case fieldKind::labelField:
+                pointData.push_back(directArray(name, "Int32", 1,
+                    body.labelField(name)));
+                break;
+        }
+    }
+
+    const std::vector<vec3>& position = body.position();
+    dataArray points = directArray("Points", "Float64", 3, position);
+    if (planar)
+    {
+        // A 2D body lies in the x-y plane whatever z holds in memory.
+        points.writeValues = [&position](std::ostream& os)
+        {
+            std::vector<vec3> buf;
+            buf.reserve(std::min(position.size(), chunkSize));
+            for (std::size_t start = 0; start < position.size();
+                 start += chunkSize)
+            {
+                const std::size_t end =
+                    std::min(position.size(), start + chunkSize);
+                buf.clear();
+                for (std::size_t i = start; i < end; ++i)
+                {
+                    buf.push_back({position[i].x, position[i].y, 0});
+                }
+                writeRaw(os, buf.data(), buf.size()*sizeof(vec3));
+            }
+        };
+    }
+
+    // One vertex cell per particle: connectivity i, offsets i + 1 (the end
+    // of each cell in connectivity).
+    auto sequence = [n](std::int64_t first)
+    {
+        return [n, first](std::ostream& os)
+        {
+            std::vector<std::int64_t> buf;
+            buf.reserve(std::min<std::uint64_t>(n, chunkSize));
+            for (std::uint64_t start = 0; start < n; start += chunkSize)
+            {
+                const std::uint64_t end = std::min<std::uint64_t>(n,
+                    start + chunkSize);
+                buf.clear();
+                for (std::uint64_t i = start; i < end; ++i)
+                {
+                    buf.push_back(std::int64_t(i) + first);
+                }
+                writeRaw(os, buf.data(), buf.size()*sizeof(std::int64_t));
+            }
+        };
+    };
+    dataArray connectivity{"connectivity", "Int64", 1,
+        n*sizeof(std::int64_t), sequence(0)};
+    dataArray offsets{"offsets", "Int64", 1, n*sizeof(std::int64_t),
+        sequence(1)};
+
+    std::vector<scalar> timeValue;
+    if (!std::isnan(time))
+    {
+        timeValue.push_back(time);
+    }
+    dataArray timeArray = directArray("TimeValue", "Float64", 1, timeValue);
+
+    // Appended blocks in the order the header lists them.
+    std::vector<dataArray*> blocks;
+    if (!timeValue.empty())
+    {
+        blocks.push_back(&timeArray);
+    }
+    for (auto& a : pointData)
+    {
+        blocks.push_back(&a);
+    }
+    blocks.push_back(&points);
+    blocks.push_back(&connectivity);
+    blocks.push_back(&offsets);
+    std::uint64_t offset = 0;
+    for (auto* b : blocks)
+    {
+        b->offset = offset;
+        offset += sizeof(std::uint64_t) + b->nBytes;
+    }
+
+    std::ostringstream header;
+    header
+        << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"PolyData\" version=\"1.0\""
+           " byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+        << "  <PolyData>\n";
+    if (!timeValue.empty())
+    {
+        header
+            << "    <FieldData>\n"
+            << "      <DataArray type=\"Float64\" Name=\"TimeValue\""
+               " NumberOfTuples=\"1\" format=\"appended\" offset=\""
+            << timeArray.offset << "\"/>\n"
+            << "    </FieldData>\n";
+    }
+    header
+        << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
+        << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\""
+           " NumberOfPolys=\"0\">\n"
+        << "      <PointData>\n";
+    for (const auto& a : pointData)
+    {
+        writeDataArrayTag(header, a, "        ");
+    }
+    header
+        << "      </PointData>\n"
+        << "      <Points>\n";
+    writeDataArrayTag(header, points, "        ");
+    header
+        << "      </Points>\n"
+        << "      <Verts>\n";
+    writeDataArrayTag(header, connectivity, "        ");
+    writeDataArrayTag(header, offsets, "        ");
+    header
+        << "      </Verts>\n"
+        << "    </Piece>\n"
+        << "  </PolyData>\n"
+        << "  <AppendedData encoding=\"raw\">\n"
+        << "   _";
+
+    writeAtomic(file, [&](std::ostream& os)
+    {
+        os << header.str();
+        for (const auto* b : blocks)
+        {
+            writeRaw(os, &b->nBytes, sizeof(std::uint64_t));
+            b->writeValues(os);
+        }
+        os << "\n  </AppendedData>\n</VTKFile>\n";
+    });
+}
+
+
+void writeVtpSeries(const std::filesystem::path& file,
+                    const std::vector<vtpSeriesEntry>& entries)
+{
+    std::ostringstream json;
+    json << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
+    for (std::size_t i = 0; i < entries.size(); ++i)
+    {
+        const auto& e = entries[i];
+        if (!std::isfinite(e.time))
+        {
+            fatalError("Time " + exactNumber(e.time) + " of " + e.name
+                + " in " + file.string() + " is not a finite number");
+        }
+        std::string name;
+        for (char c : e.name)
+        {
+            if (c == '"' || c == '\\')
+            {
+                name += '\\';
+            }
+            name += c;
+        }
+        json << "    { \"name\" : \"" << name << "\", \"time\" : "
+             << exactNumber(e.time) << " }"
+             << (i + 1 < entries.size() ? ",\n" : "\n");
+    }
+    json << "  ]\n}\n";
+
+    writeAtomic(file, [&](std::ostream& os) { os << json.str(); });
+}
+
+} // End namespace sphvcpm
