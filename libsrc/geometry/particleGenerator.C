@@ -1,0 +1,384 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// Particle bodies of a case from system/generateParticlesDict.
+
+#include "particleGenerator.H"
+#include "containerShape.H"
+#include "error.H"
+#include "lattice.H"
+#include "pointLocator.H"
+
+#include <cmath>
+#include <ostream>
+#include <sstream>
+
+namespace sphvcpm
+{
+
+namespace fs = std::filesystem;
+
+// * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+const std::vector<std::string> topKeywords =
+    {"nDimensions", "dp", "latticeOrigin", "bodies"};
+
+const std::vector<std::string> bodyKeywords =
+    {"type", "rho", "U", "latticeOrigin", "container", "shapes"};
+
+// The generation order: what a later body must not overlap comes first.
+const bodyType buildOrder[] = {bodyType::solid, bodyType::wall,
+                               bodyType::fluid};
+
+std::string volumeUnit(int nDimensions)
+{
+    return nDimensions == 2 ? " m^2" : " m^3";
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructor * * * * * * * * * * * * * * //
+
+particleGenerator::particleGenerator
+(
+    const fs::path& caseDir,
+    const fs::path& dictFile
+)
+:
+    caseDir_(caseDir),
+    dictFile_(dictFile.is_absolute() ? dictFile : caseDir/dictFile)
+{
+    if (!fs::is_regular_file(dictFile_))
+    {
+        fatalError("Cannot find the particle generation dictionary "
+            + dictFile_.string() + "\nIt describes the bodies to fill:"
+              " nDimensions, dp and bodies { <name> { type fluid|wall|solid;"
+              " shapes { ... } } }");
+    }
+    const dictionary dict = dictionary::fromFile(dictFile_);
+    dict.checkKeywords(topKeywords);
+
+    const label nDim = dict.get<label>("nDimensions");
+    if (nDim != 2 && nDim != 3)
+    {
+        dict.fatalAt("nDimensions", "Keyword 'nDimensions': expected 2 (the"
+            " x-y plane, z = 0) or 3, found " + std::to_string(nDim));
+    }
+    nDimensions_ = int(nDim);
+    dp_ = dict.getPositive("dp");
+    const vec3 origin = dict.getOrDefault<vec3>("latticeOrigin", {0, 0, 0});
+
+    const dictionary& bodies = dict.subDict("bodies");
+    const std::vector<std::string> names = bodies.keys();
+    if (names.empty())
+    {
+        dict.fatalAt("bodies", "Dictionary 'bodies' is empty: give at least"
+            " one body, e.g. water { type fluid; shapes { ... } }");
+    }
+    for (const std::string& name : names)
+    {
+        readBody(bodies, name, origin);
+    }
+
+    readControlDict();
+}
+
+
+particleGenerator::~particleGenerator() = default;
+
+
+// * * * * * * * * * * * * * * * Private Members * * * * * * * * * * * * * //
+
+void particleGenerator::readBody
+(
+    const dictionary& bodies,
+    const std::string& name,
+    const vec3& origin
+)
+{
+    const entry& e = bodies.lookupEntry(name);
+    if (e.isPattern() || !e.isDict())
+    {
+        bodies.fatalAt(name, "Entry '" + name + "' of 'bodies' is not a body:"
+            " a body is a sub-dictionary with a plain name, e.g. " + name
+            + " { type fluid; shapes { ... } }");
+    }
+    const dictionary& dict = e.dict();
+    dict.checkKeywords(bodyKeywords);
+
+    const bodyType type = bodyTypeFromName(
+        dict.getWord("type", {"fluid", "solid", "wall"}));
+    try
+    {
+        // Checks the name as a directory of 0/.
+        (void)particleBody(name, type, nDimensions_, dp_);
+    }
+    catch (const FatalError& err)
+    {
+        bodies.fatalAt(name, err.message());
+    }
+
+    bodySpec spec
+    {
+        name,
+        type,
+        0,
+        dict.getOrDefault<vec3>("U", {0, 0, 0}),
+        dict.getOrDefault<vec3>("latticeOrigin", origin),
+        region(nDimensions_),
+        e.file(),
+        e.line()
+    };
+    if (nDimensions_ == 2 && spec.U.z != 0)
+    {
+        dict.fatalAt("U", "Keyword 'U': body '" + name + "' is 2D (x-y"
+            " plane) but its velocity has a z component");
+    }
+
+    if (!dict.found("container") && !dict.found("shapes"))
+    {
+        fatalIOError(e.file(), e.line(), "Body '" + name + "' has neither"
+            " 'shapes' nor 'container': give its region, e.g. shapes { block"
+            " { shape box; min (0 0 0); max (1 1 1); } }", name);
+    }
+    if (dict.found("container"))
+    {
+        const dictionary& c = dict.subDict("container");
+        c.checkKeywords(containerShape::keywords());
+        spec.shapes.add
+        (
+            std::make_unique<containerShape>("container", c, nDimensions_,
+                                             dp_)
+        );
+    }
+    if (dict.found("shapes"))
+    {
+        spec.shapes.addShapes(dict.subDict("shapes"), dp_);
+    }
+
+    if (dict.found("rho"))
+    {
+        spec.rho = dict.getDimensioned<scalar>("rho", dimensions::density());
+        if (!(spec.rho > 0))
+        {
+            dict.fatalAt("rho", "Keyword 'rho': the density of body '" + name
+                + "' must be positive, found " + shapeDetail::str(spec.rho));
+        }
+    }
+    else
+    {
+        spec.rho = defaultRho(e, type);
+    }
+
+    specs_.push_back(std::move(spec));
+}
+
+
+scalar particleGenerator::defaultRho
+(
+    const entry& body,
+    bodyType type
+)
+{
+    const std::string& name = body.keyword();
+    const std::string what = "Body '" + name + "' (" + bodyTypeName(type)
+        + ") has no rho";
+
+    if (type != bodyType::solid)
+    {
+        if (!rho0_)
+        {
+            const fs::path file = caseDir_/"constant"/"fluidProperties";
+            if (!fs::is_regular_file(file))
+            {
+                fatalIOError(body.file(), body.line(), what + ", and "
+                    + file.string() + " (whose rho0 is the default density of"
+                      " fluids and walls) does not exist: give rho in the body"
+                      " or rho0 in constant/fluidProperties", "rho");
+            }
+            const dictionary props = dictionary::fromFile(file);
+            const scalar rho0 =
+                props.getDimensioned<scalar>("rho0", dimensions::density());
+            if (!(rho0 > 0))
+            {
+                props.fatalAt("rho0", "Keyword 'rho0': the reference density"
+                    " must be positive, found " + shapeDetail::str(rho0));
+            }
+            rho0_ = rho0;
+        }
+        return *rho0_;
+    }
+
+    if (!solidProperties_)
+    {
+        const fs::path file = caseDir_/"constant"/"solidProperties";
+        if (!fs::is_regular_file(file))
+        {
+            fatalIOError(body.file(), body.line(), what + ", and "
+                + file.string() + " does not exist: give rho in the body, or"
+                  " in constant/solidProperties as " + name + " { rho ...; }",
+                "rho");
+        }
+        solidProperties_ = dictionary::fromFile(file);
+    }
+    const dictionary& props = solidProperties_->subDict(name);
+    const scalar rho =
+        props.getDimensioned<scalar>("rho", dimensions::density());
+    if (!(rho > 0))
+    {
+        props.fatalAt("rho", "Keyword 'rho': the density of solid '" + name
+            + "' must be positive, found " + shapeDetail::str(rho));
+    }
+    return rho;
+}
+
+
+void particleGenerator::readControlDict()
+{
+    const fs::path file = caseDir_/"system"/"controlDict";
+    if (!fs::is_regular_file(file))
+    {
+        return;
+    }
+    // Only the write settings matter here; the solver checks the rest.
+    const dictionary control = dictionary::fromFile(file);
+    format_ = writeFormatFromName(
+        control.getWordOrDefault("writeFormat", {"ascii", "binary"}, "ascii"));
+    const label precision = control.getOrDefault<label>("writePrecision", 10);
+    if (precision < 1 || precision > 17)
+    {
+        control.fatalAt("writePrecision", "Keyword 'writePrecision': expected"
+            " 1 to 17 significant digits, found " + std::to_string(precision));
+    }
+    precision_ = int(precision);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions * * * * * * * * * * * * * //
+
+void particleGenerator::generate()
+{
+    bodies_.clear();
+    summaries_.clear();
+
+    const scalar minDistance = dp_*(1 - overlapTolerance);
+    const scalar cellVolume = std::pow(dp_, nDimensions_);
+    std::vector<vec3> obstacles;    // solids, then walls too
+
+    for (const bodyType type : buildOrder)
+    {
+        // Built once per stage: walls avoid solids, fluids avoid both.
+        const pointLocator near(type == bodyType::solid
+            ? std::vector<vec3>() : obstacles, dp_);
+
+        for (const bodySpec& spec : specs_)
+        {
+            if (spec.type != type)
+            {
+                continue;
+            }
+            const std::string what =
+                "body '" + spec.name + "' (" + bodyTypeName(type) + ")";
+            std::vector<vec3> nodes =
+                lattice(spec.origin, dp_, nDimensions_).fill(spec.shapes, what);
+
+            const std::size_t nNodes = nodes.size();
+            if (near.size())
+            {
+                std::size_t kept = 0;
+                for (const vec3& p : nodes)
+                {
+                    if (!near.anyWithin(p, minDistance))
+                    {
+                        nodes[kept++] = p;
+                    }
+                }
+                nodes.resize(kept);
+            }
+
+            if (nodes.empty())
+            {
+                std::ostringstream os;
+                os << "Body '" << spec.name << "' (" << bodyTypeName(type)
+                   << ") has no particles: ";
+                if (nNodes)
+                {
+                    os << "all " << nNodes << " lattice nodes of its shapes"
+                       << " lie closer than dp to "
+                       << (type == bodyType::wall ? "solid" : "wall or solid")
+                       << " particles";
+                }
+                else
+                {
+                    os << "no node of its lattice (spacing " << dp_
+                       << ", origin (" << spec.origin.x << ' '
+                       << spec.origin.y << ' ' << spec.origin.z << "))"
+                       << " lies inside its shapes"
+                       << (nDimensions_ == 2 ? " in the z = 0 plane" : "")
+                       << ": check their sizes against dp";
+                }
+                fatalIOError(spec.file, spec.line, os.str(), spec.name);
+            }
+
+            particleBody body(spec.name, type, nDimensions_, dp_);
+            body.resize(label(nodes.size()));
+            std::copy(nodes.begin(), nodes.end(), body.position().begin());
+            body.addVectorField("U", spec.U);
+            body.addScalarField("rho", spec.rho);
+            body.addScalarField("mass", spec.rho*cellVolume);
+
+            bodySummary s;
+            s.name = spec.name;
+            s.type = type;
+            s.nParticles = body.size();
+            s.nDropped = label(nNodes - nodes.size());
+            s.volume = body.size()*cellVolume;
+            s.shapeVolume = spec.shapes.volume();
+            summaries_.push_back(s);
+
+            if (type != bodyType::fluid)
+            {
+                obstacles.insert(obstacles.end(), nodes.begin(), nodes.end());
+            }
+            bodies_.push_back(std::move(body));
+        }
+    }
+}
+
+
+void particleGenerator::printSummary(std::ostream& os) const
+{
+    const std::string unit = volumeUnit(nDimensions_);
+    os << "Bodies (" << nDimensions_ << "D, dp " << dp_ << ")\n";
+    std::int64_t total = 0;
+    for (const bodySummary& s : summaries_)
+    {
+        os << "    " << s.name << " (" << bodyTypeName(s.type) << "): "
+           << s.nParticles << " particles, volume " << s.volume << unit;
+        if (s.shapeVolume >= 0)
+        {
+            os << " (shapes " << s.shapeVolume << unit << ")";
+        }
+        if (s.nDropped)
+        {
+            os << ", " << s.nDropped << " dropped next to "
+               << (s.type == bodyType::wall ? "solids" : "walls or solids");
+        }
+        os << "\n";
+        total += s.nParticles;
+    }
+    os << "Total: " << total << " particles in " << summaries_.size()
+       << (summaries_.size() == 1 ? " body" : " bodies") << "\n";
+}
+
+
+void particleGenerator::write() const
+{
+    writeTimeDirectory(caseDir_, timeState(), bodies_, format_, precision_);
+}
+
+} // End namespace sphvcpm

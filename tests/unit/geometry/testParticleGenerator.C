@@ -1,0 +1,584 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// particleGenerator on scratch cases: bodies, counts and fields, densities
+// from the property files, no overlap of fluid with walls or solids, 0/ as
+// written and read back, and every bad input stopping with a message that
+// names file, line and keyword.
+
+#include "lattice.H"
+#include "particleGenerator.H"
+#include "pointLocator.H"
+#include "testGeometryTools.H"
+#include "timeDirectory.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <sstream>
+
+using namespace sphvcpm;
+using test::catchFatal;
+using test::expectError;
+using test::expectMessage;
+using test::lineOf;
+using test::scratchDir;
+using test::writeText;
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+// The example of the generator's documentation, 2D.
+const std::string exampleDict =
+R"(nDimensions     2;          // 2: particles in the x-y plane (z = 0)
+dp              0.01;       // particle spacing [m]
+latticeOrigin   (0 0 0);
+bodies
+{
+    tank
+    {
+        type        wall;
+        container { min (0 0 0); max (1 0.8 0); layers 3; openTop no; }
+    }
+    water
+    {
+        type        fluid;
+        U           (0.5 0 0);
+        shapes
+        {
+            column { shape box; min (0 0 0); max (0.4 0.3 0); }
+            hole   { shape sphere; centre (0.2 0.1 0); radius 0.05; operation subtract; }
+        }
+    }
+    gate
+    {
+        type        solid;
+        latticeOrigin (0.5 0 0);
+        shapes { plate { shape box; min (0.5 0 0); max (0.52 0.2 0); } }
+    }
+}
+)";
+
+const std::string fluidProperties =
+    "rho0            [1 -3 0 0 0 0 0] 1000;\nnu 1e-6;\n";
+
+const std::string solidProperties =
+    "gate\n{\n    model vcpm;\n    rho [1 -3 0 0 0 0 0] 2700;\n"
+    "    E 1e9;\n}\n";
+
+// A scratch case with the generator's dictionary and property files.
+struct testCase
+{
+    scratchDir dir{"generator"};
+
+    explicit testCase
+    (
+        const std::string& dict,
+        const std::string& fluid = fluidProperties,
+        const std::string& solid = solidProperties
+    )
+    {
+        writeText(dictFile(), dict);
+        if (!fluid.empty())
+        {
+            writeText(dir.path()/"constant"/"fluidProperties", fluid);
+        }
+        if (!solid.empty())
+        {
+            writeText(dir.path()/"constant"/"solidProperties", solid);
+        }
+    }
+
+    fs::path dictFile() const
+    {
+        return dir.path()/"system"/"generateParticlesDict";
+    }
+    const fs::path& path() const { return dir.path(); }
+};
+
+std::string replaced(std::string text, const std::string& from,
+                     const std::string& to)
+{
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "no \"" << from << "\" to replace";
+    if (at != std::string::npos)
+    {
+        text.replace(at, from.size(), to);
+    }
+    return text;
+}
+
+const particleBody& bodyNamed(const particleGenerator& gen,
+                              const std::string& name)
+{
+    for (const particleBody& b : gen.bodies())
+    {
+        if (b.name() == name)
+        {
+            return b;
+        }
+    }
+    ADD_FAILURE() << "no body " << name;
+    return gen.bodies().front();
+}
+
+// Smallest distance from any particle of a to any particle of b.
+scalar minDistance(const particleBody& a, const particleBody& b)
+{
+    scalar best = std::numeric_limits<scalar>::max();
+    for (const vec3& p : a.position())
+    {
+        for (const vec3& q : b.position())
+        {
+            best = std::min(best, magSqr(p - q));
+        }
+    }
+    return std::sqrt(best);
+}
+
+// Fields as written: position, U, rho, mass = rho dp^d, ids 0..N-1.
+void expectFields(const particleBody& b, const vec3& U, scalar rho)
+{
+    EXPECT_EQ(b.fieldNames(),
+              (std::vector<std::string>{"U", "id", "mass", "position",
+                                        "rho"}));
+    const scalar mass = rho*std::pow(b.dp(), b.nDimensions());
+    for (label i = 0; i < b.size(); ++i)
+    {
+        ASSERT_EQ(b.id()[i], i);
+        ASSERT_EQ(b.vectorField("U")[i], U);
+        ASSERT_EQ(b.scalarField("rho")[i], rho);
+        ASSERT_DOUBLE_EQ(b.scalarField("mass")[i], mass);
+        if (b.nDimensions() == 2)
+        {
+            ASSERT_EQ(b.position()[i].z, 0);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+TEST(particleGenerator, exampleCase)
+{
+    testCase c(exampleDict);
+    particleGenerator gen(c.path());
+    EXPECT_EQ(gen.nDimensions(), 2);
+    EXPECT_EQ(gen.dp(), 0.01);
+    gen.generate();
+
+    // Solids first, then walls, then fluids.
+    ASSERT_EQ(gen.bodies().size(), 3u);
+    EXPECT_EQ(gen.bodies()[0].name(), "gate");
+    EXPECT_EQ(gen.bodies()[1].name(), "tank");
+    EXPECT_EQ(gen.bodies()[2].name(), "water");
+
+    const std::size_t nHole = test::countNodes(
+        "h { shape sphere; centre (0.2 0.1 0); radius 0.05; }", 2, 0.01);
+    const particleBody& gate = bodyNamed(gen, "gate");
+    const particleBody& tank = bodyNamed(gen, "tank");
+    const particleBody& water = bodyNamed(gen, "water");
+    EXPECT_EQ(gate.size(), 2*20);
+    EXPECT_EQ(tank.size(), 106*86 - 100*80);
+    EXPECT_EQ(std::size_t(water.size()), 1200 - nHole);
+    EXPECT_EQ(gate.type(), bodyType::solid);
+    EXPECT_EQ(tank.type(), bodyType::wall);
+    EXPECT_EQ(water.type(), bodyType::fluid);
+
+    expectFields(gate, {0, 0, 0}, 2700);
+    expectFields(tank, {0, 0, 0}, 1000);
+    expectFields(water, {0.5, 0, 0}, 1000);
+
+    // The log lines.
+    std::ostringstream os;
+    gen.printSummary(os);
+    const std::string log = os.str();
+    EXPECT_NE(log.find("    gate (solid): 40 particles, volume 0.004 m^2"
+                       " (shapes 0.004 m^2)\n"), std::string::npos) << log;
+    EXPECT_NE(log.find("    tank (wall): 1116 particles"), std::string::npos)
+        << log;
+    EXPECT_NE(log.find("    water (fluid): "
+                       + std::to_string(1200 - nHole) + " particles"),
+              std::string::npos) << log;
+    EXPECT_NE(log.find("Total: " + std::to_string(40 + 1116 + 1200 - nHole)
+                       + " particles in 3 bodies"), std::string::npos) << log;
+
+    // 0/ as written reads back (bodies come back by name).
+    gen.write();
+    const std::vector<particleBody> back = readTimeDirectory(c.path(), "0");
+    ASSERT_EQ(back.size(), 3u);
+    for (const particleBody& b : back)
+    {
+        const particleBody& orig = bodyNamed(gen, b.name());
+        ASSERT_EQ(b.size(), orig.size());
+        EXPECT_EQ(b.fieldNames(), orig.fieldNames());
+        EXPECT_EQ(b.type(), orig.type());
+        EXPECT_EQ(b.dp(), orig.dp());
+        for (label i = 0; i < b.size(); ++i)
+        {
+            ASSERT_NEAR(mag(b.position()[i] - orig.position()[i]), 0, 1e-12);
+        }
+    }
+    // Generating again replaces 0/.
+    gen.write();
+    EXPECT_EQ(readTimeDirectory(c.path(), "0").size(), 3u);
+}
+
+
+TEST(particleGenerator, fluidTouchingContainer)
+{
+    // The fluid box reaches into the wall layers: the nodes there go, the
+    // ones a spacing away from the wall stay, so the count is exact.
+    const std::string dict = replaced(replaced(exampleDict,
+        "min (0 0 0); max (0.4 0.3 0); }",
+        "min (-0.03 -0.03 0); max (0.4 0.3 0); }"),
+        "            hole   { shape sphere; centre (0.2 0.1 0); radius 0.05;"
+        " operation subtract; }\n", "");
+    testCase c(dict);
+    particleGenerator gen(c.path());
+    gen.generate();
+    const particleBody& water = bodyNamed(gen, "water");
+    const particleBody& tank = bodyNamed(gen, "tank");
+    EXPECT_EQ(water.size(), 1200);
+    EXPECT_EQ(gen.summaries().back().nDropped, 43*33 - 1200);
+    EXPECT_GE(minDistance(water, tank), 0.01*(1 - 1e-6));
+    EXPECT_NEAR(minDistance(water, tank), 0.01, 1e-12);
+
+    // Off the walls' lattice: nothing closer than dp either.
+    testCase shifted(replaced(dict, "        U           (0.5 0 0);\n",
+        "        U           (0.5 0 0);\n"
+        "        latticeOrigin (0.0037 -0.0021 0);\n"));
+    particleGenerator gen2(shifted.path());
+    gen2.generate();
+    const particleBody& water2 = bodyNamed(gen2, "water");
+    EXPECT_GE(minDistance(water2, bodyNamed(gen2, "tank")),
+              0.01*(1 - 1e-6));
+    EXPECT_GT(gen2.summaries().back().nDropped, 0);
+    EXPECT_GT(water2.size(), 1000);
+}
+
+
+TEST(particleGenerator, fluidOverlappingSolid)
+{
+    // The water spans the gate, on a lattice shifted from the gate's; the
+    // gate also reaches into the tank's floor.
+    std::string dict = replaced(exampleDict, "max (0.4 0.3 0); }",
+                                "max (0.8 0.3 0); }");
+    dict = replaced(dict, "latticeOrigin (0.5 0 0);",
+                    "latticeOrigin (0.5031 0.0047 0);");
+    dict = replaced(dict, "min (0.5 0 0); max (0.52 0.2 0);",
+                    "min (0.5 -0.02 0); max (0.53 0.2 0);");
+    testCase c(dict);
+    particleGenerator gen(c.path());
+    gen.generate();
+    const particleBody& gate = bodyNamed(gen, "gate");
+    const particleBody& tank = bodyNamed(gen, "tank");
+    const particleBody& water = bodyNamed(gen, "water");
+    const scalar dmin = 0.01*(1 - 1e-6);
+    EXPECT_GE(minDistance(water, gate), dmin);
+    EXPECT_GE(minDistance(water, tank), dmin);
+    EXPECT_GE(minDistance(tank, gate), dmin);     // walls avoid solids too
+    EXPECT_EQ(gate.size(), 3*22);                 // solids keep everything
+    EXPECT_GT(gen.summaries()[1].nDropped, 0);    // tank
+    EXPECT_GT(gen.summaries()[2].nDropped, 0);    // water
+    // The water lost little more than the gate's area.
+    EXPECT_GT(water.size(), 2400 - 100 - 150);
+
+    std::ostringstream os;
+    gen.printSummary(os);
+    EXPECT_NE(os.str().find("dropped next to walls or solids"),
+              std::string::npos) << os.str();
+    EXPECT_NE(os.str().find("dropped next to solids"), std::string::npos)
+        << os.str();
+}
+
+
+TEST(particleGenerator, threeDimensionalTank)
+{
+    const std::string dict =
+        "nDimensions 3;\ndp 0.0125;\nbodies\n{\n"
+        "    tank { type wall; rho 1000; container { min (0 0 0);"
+        " max (0.5 0.5 0.45); layers 3; openTop yes; } }\n"
+        "    water { type fluid; rho 998; shapes { column { shape box;"
+        " min (0 0 0); max (0.5 0.5 0.3); }\n"
+        "        ball { shape sphere; centre (0.25 0.25 0.4); radius 0.04; }"
+        " } }\n}\n";
+    testCase c(dict, "", "");      // no property files: rho given
+    particleGenerator gen(c.path());
+    gen.generate();
+    const particleBody& tank = bodyNamed(gen, "tank");
+    const particleBody& water = bodyNamed(gen, "water");
+    EXPECT_EQ(tank.size(), 46*46*39 - 40*40*36);
+    const std::size_t nBall = test::countNodes("b { shape sphere;"
+        " centre (0.25 0.25 0.4); radius 0.04; }", 3, 0.0125);
+    EXPECT_EQ(std::size_t(water.size()), 40*40*24 + nBall);
+    expectFields(tank, {0, 0, 0}, 1000);
+    expectFields(water, {0, 0, 0}, 998);
+    EXPECT_NEAR(water.scalarField("mass")[0], 998*std::pow(0.0125, 3),
+                1e-18);
+
+    // Only the fluid's nearest neighbours are checked, with a locator.
+    const pointLocator walls(tank.position(), 0.0125);
+    for (const vec3& p : water.position())
+    {
+        ASSERT_FALSE(walls.anyWithin(p, 0.0125*(1 - 1e-6)));
+    }
+
+    std::ostringstream os;
+    gen.printSummary(os);
+    EXPECT_NE(os.str().find("m^3"), std::string::npos) << os.str();
+}
+
+
+TEST(particleGenerator, controlDictWriteSettings)
+{
+    testCase c(exampleDict);
+    writeText(c.path()/"system"/"controlDict",
+              "application sphVcpmFsi;\nwriteFormat binary;\n"
+              "writePrecision 12;\nendTime 1;\n");
+    particleGenerator gen(c.path());
+    EXPECT_EQ(gen.format(), writeFormat::binary);
+    EXPECT_EQ(gen.precision(), 12);
+    gen.generate();
+    gen.write();
+    const std::string position =
+        [&]
+        {
+            std::ifstream is(c.path()/"0"/"water"/"position");
+            std::ostringstream os;
+            os << is.rdbuf();
+            return os.str();
+        }();
+    EXPECT_NE(position.find("format      binary;"), std::string::npos);
+    // Binary is exact.
+    for (const particleBody& b : readTimeDirectory(c.path(), "0"))
+    {
+        const particleBody& orig = bodyNamed(gen, b.name());
+        ASSERT_EQ(b.size(), orig.size());
+        EXPECT_EQ(std::memcmp(b.position().data(), orig.position().data(),
+                              b.size()*sizeof(vec3)), 0);
+    }
+
+    // Without the settings: ascii, 10 digits.
+    testCase plain(exampleDict);
+    writeText(plain.path()/"system"/"controlDict", "endTime 1;\n");
+    const particleGenerator gen2(plain.path());
+    EXPECT_EQ(gen2.format(), writeFormat::ascii);
+    EXPECT_EQ(gen2.precision(), 10);
+}
+
+
+TEST(particleGenerator, propertyFileDensities)
+{
+    // rho0 without dimensions, and a dimensioned solid rho.
+    testCase c(exampleDict, "rho0 997;\n",
+               "gate { rho 1200; }\nother { rho 5; }\n");
+    particleGenerator gen(c.path());
+    gen.generate();
+    EXPECT_EQ(bodyNamed(gen, "water").scalarField("rho")[0], 997);
+    EXPECT_EQ(bodyNamed(gen, "tank").scalarField("rho")[0], 997);
+    EXPECT_EQ(bodyNamed(gen, "gate").scalarField("rho")[0], 1200);
+
+    // A body's own rho wins, and then no property file is needed.
+    testCase own(replaced(replaced(replaced(exampleDict,
+        "type        fluid;", "type        fluid;\n        rho 1025;"),
+        "type        wall;", "type        wall; rho 1025;"),
+        "type        solid;", "type        solid; rho [1 -3 0 0 0 0 0] 7800;"),
+        "", "");
+    particleGenerator gen2(own.path());
+    gen2.generate();
+    EXPECT_EQ(bodyNamed(gen2, "water").scalarField("rho")[0], 1025);
+    EXPECT_EQ(bodyNamed(gen2, "gate").scalarField("rho")[0], 7800);
+}
+
+
+// * * * * * * * * * * * * * * * * Bad input * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+enum class where { dict, fluidProperties, solidProperties, controlDict,
+                   none };
+
+struct badCase
+{
+    const char* name;
+    std::string dict;          // the generator's dictionary
+    where file;                // the file the error names
+    std::string lineOf;        // text on the line it names ("" any line)
+    std::vector<std::string> parts;
+    std::string fluid = fluidProperties;
+    std::string solid = solidProperties;
+    std::string control = "";
+};
+
+std::vector<badCase> badCases()
+{
+    const std::string& d = exampleDict;
+    const std::string hole = "            hole   { shape sphere; centre"
+        " (0.2 0.1 0); radius 0.05; operation subtract; }";
+    return
+    {
+        {"dpZero", replaced(d, "0.01;  ", "0;     "), where::dict, "dp  ",
+         {"Keyword 'dp'", "expected a positive number", "found 0"}},
+        {"dpNegative", replaced(d, "0.01;  ", "-0.01; "), where::dict,
+         "dp  ", {"Keyword 'dp'", "expected a positive number",
+         "found -0.01"}},
+        {"unknownShape", replaced(d, "shape sphere", "shape ball"),
+         where::dict, "hole", {"Keyword 'shape'", "unknown value 'ball'",
+         "(box container cylinder sphere)"}},
+        {"unknownBodyType", replaced(d, "type        fluid;",
+         "type        liquid;"), where::dict, "liquid",
+         {"Keyword 'type'", "unknown value 'liquid'", "(fluid solid wall)"}},
+        {"misspelledTopKeyword", replaced(d, "dp              0.01;",
+         "dpp             0.01;"), where::dict, "dpp",
+         {"Unknown keyword 'dpp'", "Did you mean 'dp'?", "nDimensions",
+          "latticeOrigin", "bodies"}},
+        {"misspelledBodyKeyword", replaced(d, "latticeOrigin (0.5",
+         "latticeOrign (0.5"), where::dict, "latticeOrign",
+         {"Unknown keyword 'latticeOrign'", "Did you mean 'latticeOrigin'?",
+          "container", "shapes"}},
+        {"misspelledShapeKeyword", replaced(d, "radius 0.05",
+         "raduis 0.05"), where::dict, "raduis",
+         {"Unknown keyword 'raduis'", "Did you mean 'radius'?",
+          "operation"}},
+        {"misspelledOperation", replaced(d, "operation subtract",
+         "operation substract"), where::dict, "substract",
+         {"Keyword 'operation'", "unknown value 'substract'",
+          "(add subtract)"}},
+        {"maxNotAboveMin", replaced(d, "max (0.4 0.3 0)", "max (0.4 0 0)"),
+         where::dict, "column",
+         {"max (0.4 0) is not above min (0 0) in y"}},
+        {"containerMaxNotAboveMin", replaced(d, "max (1 0.8 0)",
+         "max (0 0.8 0)"), where::dict, "container",
+         {"max (0 0.8) is not above min (0 0) in x"}},
+        {"zeroRadius", replaced(d, "radius 0.05", "radius 0"), where::dict,
+         "hole", {"Keyword 'radius'", "expected a positive number"}},
+        {"cylinderWithoutAxis", replaced(d, hole, "            hole"
+         "   { shape cylinder; point1 (0.2 0.1 0); point2 (0.2 0.1 0);"
+         " radius 0.05; operation subtract; }"), where::dict, "hole",
+         {"point1 == point2", "no direction"}},
+        {"zeroLayers", replaced(d, "layers 3", "layers 0"), where::dict,
+         "layers", {"at least one layer", "found 0"}},
+        {"emptyBody", replaced(d, "min (0.5 0 0); max (0.52 0.2 0);",
+         "min (0.501 0 0); max (0.504 0.2 0);"), where::dict, "    gate",
+         {"Body 'gate' (solid) has no particles", "no node of its lattice",
+          "spacing 0.01"}},
+        {"fluidAllInsideWall", replaced(d, "min (0 0 0); max (0.4 0.3 0);",
+         "min (-0.03 0 0); max (0 0.3 0);"), where::dict, "    water",
+         {"Body 'water' (fluid) has no particles", "all 90 lattice nodes",
+          "closer than dp to wall or solid particles"}},
+        {"nDimensions4", replaced(d, "nDimensions     2;",
+         "nDimensions     4;"), where::dict, "nDimensions",
+         {"Keyword 'nDimensions'", "expected 2", "or 3, found 4"}},
+        {"nDimensionsNotInteger", replaced(d, "nDimensions     2;",
+         "nDimensions     2.5;"), where::dict, "nDimensions",
+         {"nDimensions"}},
+        {"missingFluidProperties", d, where::dict, "    tank",
+         {"Body 'tank' (wall) has no rho", "constant/fluidProperties",
+          "does not exist", "rho0"}, ""},
+        {"fluidPropertiesWithoutRho0", d, where::fluidProperties, "",
+         {"Keyword 'rho0' is undefined", "Did you mean"}, "rho 1000;\n"},
+        {"rho0WrongDimensions", d, where::fluidProperties, "rho0",
+         {"dimensions do not match", "[1 -3 0 0 0 0 0]"},
+         "rho0 [0 2 -1 0 0 0 0] 1000;\n"},
+        {"rho0Negative", d, where::fluidProperties, "rho0",
+         {"Keyword 'rho0'", "must be positive"}, "rho0 -1000;\n"},
+        {"missingSolidProperties", d, where::dict, "    gate",
+         {"Body 'gate' (solid) has no rho", "constant/solidProperties",
+          "does not exist"}, fluidProperties, ""},
+        {"solidPropertiesWithoutBody", d, where::solidProperties, "",
+         {"Keyword 'gate' is undefined"}, fluidProperties,
+         "plate { rho 2700; }\n"},
+        {"negativeRho", replaced(d, "type        fluid;",
+         "type        fluid;\n        rho -5;"), where::dict, "rho -5",
+         {"Keyword 'rho'", "must be positive", "'water'"}},
+        {"velocityOutOfPlane", replaced(d, "U           (0.5 0 0);",
+         "U           (0.5 0 1);"), where::dict, "(0.5 0 1)",
+         {"Keyword 'U'", "z component"}},
+        {"reservedBodyName", replaced(d, "    water\n", "    uniform\n"),
+         where::dict, "uniform", {"Invalid body name 'uniform'"}},
+        {"bodyWithoutShapes", replaced(d, "        shapes { plate { shape"
+         " box; min (0.5 0 0); max (0.52 0.2 0); } }\n", ""), where::dict,
+         "    gate", {"Body 'gate' has neither 'shapes' nor 'container'"}},
+        {"shapeNotADictionary", replaced(d, hole, "            hole 3;"),
+         where::dict, "hole 3", {"Entry 'hole' of 'shapes' is not a shape"}},
+        {"firstShapeSubtracts", replaced(d, "max (0.4 0.3 0); }",
+         "max (0.4 0.3 0); operation subtract; }"), where::dict, "column",
+         {"Shape 'column' subtracts from nothing"}},
+        {"emptyBodies", "nDimensions 2;\ndp 0.01;\nbodies\n{\n}\n",
+         where::dict, "bodies", {"Dictionary 'bodies' is empty"}},
+        {"badWriteFormat", d, where::controlDict, "writeFormat",
+         {"Keyword 'writeFormat'", "unknown value 'text'",
+          "(ascii binary)"}, fluidProperties, solidProperties,
+         "writeFormat text;\n"},
+    };
+}
+
+} // End anonymous namespace
+
+
+TEST(particleGenerator, badInput)
+{
+    for (const badCase& b : badCases())
+    {
+        SCOPED_TRACE(b.name);
+        testCase c(b.dict, b.fluid, b.solid);
+        if (!b.control.empty())
+        {
+            writeText(c.path()/"system"/"controlDict", b.control);
+        }
+        const FatalError err = catchFatal([&]
+        {
+            particleGenerator gen(c.path());
+            gen.generate();
+        });
+
+        fs::path file;
+        std::string text;
+        switch (b.file)
+        {
+            case where::dict:
+                file = c.dictFile();
+                text = b.dict;
+                break;
+            case where::fluidProperties:
+                file = c.path()/"constant"/"fluidProperties";
+                text = b.fluid;
+                break;
+            case where::solidProperties:
+                file = c.path()/"constant"/"solidProperties";
+                text = b.solid;
+                break;
+            case where::controlDict:
+                file = c.path()/"system"/"controlDict";
+                text = b.control;
+                break;
+            case where::none:
+                break;
+        }
+        if (b.file == where::none)
+        {
+            expectMessage(err, b.parts);
+            continue;
+        }
+        const int line = b.lineOf.empty() ? -1 : lineOf(text, b.lineOf);
+        EXPECT_NE(line, 0) << "no \"" << b.lineOf << "\" in the file";
+        expectError(err, file.string(), line, b.parts);
+    }
+}
+
+
+TEST(particleGenerator, missingDictionary)
+{
+    scratchDir dir("generator");
+    expectMessage(catchFatal([&]
+    {
+        particleGenerator gen(dir.path());
+    }), {"Cannot find the particle generation dictionary",
+         "system/generateParticlesDict"});
+}
