@@ -10,8 +10,8 @@ expectedCount()
     case "$1/$2" in
         hydrostaticTank2D/water) echo $((100*50)) ;;
         hydrostaticTank2D/tank)  echo $((106*83 - 100*80)) ;;   # 3 layers, open top
-        hydrostaticTank3D/water) echo $((40*40*24)) ;;
-        hydrostaticTank3D/tank)  echo $((46*46*39 - 40*40*36)) ;;
+        hydrostaticTank3D/water) echo $((15*15*10)) ;;
+        hydrostaticTank3D/tank)  echo $((21*21*18 - 15*15*15)) ;;
         *) echo "" ;;
     esac
 }

@@ -1,0 +1,98 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "timeControl.H"
+#include "error.H"
+
+#include <cmath>
+
+namespace sphvcpm
+{
+
+timeControl timeControl::read(const std::filesystem::path& caseDir)
+{
+    const auto file = caseDir/"system/controlDict";
+    if (!std::filesystem::exists(file))
+    {
+        fatalIOError(file.string(), 0,
+            "cannot find system/controlDict of the case");
+    }
+    timeControl tc;
+    tc.dict = dictionary::fromFile(file);
+    const dictionary& d = tc.dict;
+    d.checkKeywords({"application", "startFrom", "startTime", "stopAt",
+        "endTime", "deltaT", "adjustTimeStep", "maxCo", "maxDeltaT",
+        "minDeltaT", "writeControl", "writeInterval", "purgeWrite",
+        "writeFormat", "writePrecision", "writeCompression", "timeFormat",
+        "timePrecision", "runTimeModifiable", "logInterval", "device",
+        "functions", "libs"});
+
+    const std::string from = d.getWordOrDefault("startFrom",
+        {"startTime", "latestTime", "firstTime"}, "latestTime");
+    tc.startFrom = from == "startTime" ? startFromType::startTime
+                 : from == "firstTime" ? startFromType::firstTime
+                 : startFromType::latestTime;
+    tc.startTime = d.getOrDefault<scalar>("startTime", 0);
+    tc.stopAt = d.getWordOrDefault("stopAt",
+        {"endTime", "writeNow", "noWriteNow"}, "endTime");
+    tc.endTime = d.get<scalar>("endTime");
+    if (!(tc.endTime > 0))
+    {
+        d.fatalAt("endTime", "endTime must be > 0");
+    }
+    tc.deltaT = d.getPositive("deltaT");
+    tc.adjustTimeStep = d.getOrDefault<bool>("adjustTimeStep", true);
+    tc.maxCo = d.getOrDefault<scalar>("maxCo", 0.2);
+    if (!(tc.maxCo > 0 && tc.maxCo <= 1))
+    {
+        d.fatalAt("maxCo", "maxCo (the CFL number) must be in (0, 1];"
+            " 0.2 is the usual SPH value");
+    }
+    tc.maxDeltaT = d.found("maxDeltaT") ? d.getPositive("maxDeltaT") : 1e30;
+    tc.minDeltaT = d.found("minDeltaT") ? d.getPositive("minDeltaT")
+                                        : tc.deltaT*1e-6;
+
+    const std::string wc = d.getWordOrDefault("writeControl",
+        {"adjustableRunTime", "runTime", "timeStep"}, "adjustableRunTime");
+    tc.writeControl = wc == "timeStep" ? writeControlType::timeStep
+                    : wc == "runTime" ? writeControlType::runTime
+                    : writeControlType::adjustableRunTime;
+    tc.writeInterval = d.getPositive("writeInterval");
+    if (tc.writeControl == writeControlType::timeStep
+     && tc.writeInterval != std::floor(tc.writeInterval))
+    {
+        d.fatalAt("writeInterval", "writeControl timeStep needs a whole"
+            " number of steps as writeInterval");
+    }
+    tc.purgeWrite = d.getOrDefault<label>("purgeWrite", 0);
+    if (tc.purgeWrite < 0)
+    {
+        d.fatalAt("purgeWrite", "purgeWrite must be >= 0");
+    }
+    tc.writeFormatName = d.getWordOrDefault("writeFormat",
+        {"ascii", "binary"}, "binary");
+    tc.writePrecision = d.getOrDefault<label>("writePrecision", 10);
+    if (tc.writePrecision < 1 || tc.writePrecision > 17)
+    {
+        d.fatalAt("writePrecision", "writePrecision must be in [1, 17]");
+    }
+    if (d.found("timeFormat"))
+    {
+        tc.format = timeFormatFromName(d.getWord("timeFormat",
+            {"general", "fixed", "scientific"}));
+    }
+    tc.timePrecision = d.getOrDefault<label>("timePrecision", 6);
+    if (tc.timePrecision < 1 || tc.timePrecision > 17)
+    {
+        d.fatalAt("timePrecision", "timePrecision must be in [1, 17]");
+    }
+    tc.logInterval = d.getOrDefault<label>("logInterval", 100);
+    if (tc.logInterval < 1)
+    {
+        d.fatalAt("logInterval", "logInterval must be >= 1 (steps)");
+    }
+    tc.device = d.getWordOrDefault("device", {"cpu", "cuda"}, "cpu");
+    return tc;
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,234 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "functionObject.H"
+#include "functionObjects.H"
+#include "error.H"
+
+#include <cmath>
+#include <limits>
+
+namespace sphvcpm
+{
+
+namespace
+{
+
+const std::vector<std::string> writeControls
+{
+    "timeStep", "runTime", "adjustableRunTime"
+};
+
+const std::vector<std::string> types
+{
+    "probes", "freeSurfaceGauges", "forces", "energy", "surgeFront"
+};
+
+std::string listOf(const std::vector<std::string>& words)
+{
+    std::string s = "(";
+    for (std::size_t i = 0; i < words.size(); ++i)
+    {
+        s += (i ? " " : "") + words[i];
+    }
+    return s + ")";
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructor  * * * * * * * * * * * * * * //
+
+functionObject::functionObject(std::string name, const dictionary& dict,
+    const std::filesystem::path& caseDir, const std::string& startTimeName)
+:
+    name_(std::move(name)),
+    dict_(dict),
+    directory_(caseDir/"postProcessing"/name_/startTimeName),
+    writeControl_
+    (
+        dict.getWordOrDefault("writeControl", writeControls, "timeStep")
+    ),
+    writeInterval_(1)
+{
+    if (dict.found("writeInterval"))
+    {
+        writeInterval_ = dict.getPositive("writeInterval");
+        if
+        (
+            writeControl_ == "timeStep"
+         && (writeInterval_ != std::floor(writeInterval_)
+          || writeInterval_ > std::numeric_limits<label>::max())
+        )
+        {
+            dict.fatalAt("writeInterval", "Function object '" + name_
+                + "': writeInterval of writeControl timeStep is a number"
+                  " of time steps (a whole number >= 1), found "
+                + std::to_string(writeInterval_));
+        }
+    }
+    // NaN: nothing sampled yet (any finite value could be a real time).
+    nextSampleTime_ = std::numeric_limits<scalar>::quiet_NaN();
+}
+
+
+// * * * * * * * * * * * * * * * Member functions * * * * * * * * * * * * * //
+
+void functionObject::execute(const solverSnapshot& s)
+{
+    const bool first = std::isnan(nextSampleTime_);
+    const bool timeStep = writeControl_ == "timeStep";
+    bool due = first;
+    if (!first)
+    {
+        due = timeStep
+            ? s.timeIndex % label(writeInterval_) == 0
+            : s.time >= nextSampleTime_
+                      - functionObjects::timeTolerance*writeInterval_;
+    }
+    if (!due)
+    {
+        return;
+    }
+
+    sample(s);
+
+    if (timeStep)
+    {
+        nextSampleTime_ = s.time;   // only marks "sampled"
+    }
+    else
+    {
+        // The next multiple of the interval strictly after this sample
+        // (the tolerance keeps a time a rounding error short of a multiple
+        // from being sampled again at that multiple).
+        nextSampleTime_ =
+            (
+                std::floor
+                (
+                    s.time/writeInterval_ + functionObjects::timeTolerance
+                )
+              + 1
+            )*writeInterval_;
+    }
+}
+
+
+std::ofstream& functionObject::output(const std::string& file)
+{
+    for (auto& f : files_)
+    {
+        if (f.first == file)
+        {
+            return *f.second;
+        }
+    }
+
+    // Opened on the first sample, so a run that stops during set-up leaves
+    // no empty tables. A restart at the same start time rewrites the same
+    // times, hence truncation.
+    std::error_code ec;
+    std::filesystem::create_directories(directory_, ec);
+    if (ec)
+    {
+        fatalError("Function object '" + name_ + "': cannot create the"
+            " directory " + directory_.string() + ": " + ec.message());
+    }
+    const auto path = directory_/file;
+    auto os = std::make_unique<std::ofstream>(path, std::ios::trunc);
+    if (!*os)
+    {
+        fatalError("Function object '" + name_ + "': cannot open "
+            + path.string() + " for writing");
+    }
+    os->precision(10);
+    files_.emplace_back(file, std::move(os));
+    return *files_.back().second;
+}
+
+
+// * * * * * * * * * * * * * * * * * Selector * * * * * * * * * * * * * * * //
+
+std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
+    const dictionary& controlDict, const std::filesystem::path& caseDir,
+    const std::string& startTimeName, const sphModel& model,
+    const std::vector<bodyInfo>& bodies)
+{
+    std::vector<std::unique_ptr<functionObject>> all;
+    const entry* functions = controlDict.findEntry("functions");
+    if (!functions)
+    {
+        return all;
+    }
+    if (!functions->isDict())
+    {
+        fatalIOError(functions->file(), functions->line(),
+            "'functions' must be a dictionary of function objects:"
+            " functions { <name> { type <type>; ... } }", "functions");
+    }
+
+    const dictionary& fns = functions->dict();
+    for (const std::string& name : fns.keys())
+    {
+        const entry& e = *fns.findEntry(name);
+        if (!e.isDict())
+        {
+            fatalIOError(e.file(), e.line(), "Function object '" + name
+                + "' in " + fns.name() + " is not a sub-dictionary: expected "
+                + name + " { type <type>; ... } with type one of "
+                + listOf(types), name);
+        }
+        if
+        (
+            name.empty() || name == "." || name == ".."
+         || name.find_first_of("/\\") != std::string::npos
+        )
+        {
+            fatalIOError(e.file(), e.line(), "Function object name '" + name
+                + "' cannot be a directory name under postProcessing", name);
+        }
+
+        const dictionary& dict = e.dict();
+        if (!dict.getOrDefault<bool>("enabled", true))
+        {
+            continue;
+        }
+        const std::string type = dict.get<std::string>("type");
+
+        using namespace functionObjects;
+        if (type == "probes")
+        {
+            all.push_back(std::make_unique<probes>
+                (name, dict, caseDir, startTimeName, model));
+        }
+        else if (type == "freeSurfaceGauges")
+        {
+            all.push_back(std::make_unique<freeSurfaceGauges>
+                (name, dict, caseDir, startTimeName, model));
+        }
+        else if (type == "forces")
+        {
+            all.push_back(std::make_unique<forces>
+                (name, dict, caseDir, startTimeName, bodies));
+        }
+        else if (type == "energy")
+        {
+            all.push_back(std::make_unique<energy>
+                (name, dict, caseDir, startTimeName));
+        }
+        else if (type == "surgeFront")
+        {
+            all.push_back(std::make_unique<surgeFront>
+                (name, dict, caseDir, startTimeName));
+        }
+        else
+        {
+            dict.fatalAt("type", "Function object '" + name
+                + "': unknown type '" + type + "'. Valid types are: "
+                + listOf(types));
+        }
+    }
+    return all;
+}
+
+} // End namespace sphvcpm

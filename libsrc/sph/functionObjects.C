@@ -1,0 +1,523 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "functionObjects.H"
+#include "error.H"
+#include "parallel.H"
+#include "withKernel.H"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+namespace sphvcpm
+{
+namespace functionObjects
+{
+
+// OpenFOAM cases carry libs and enabled in every entry; libs is ignored,
+// enabled false skips the entry (readAll).
+const std::vector<std::string> commonKeywords
+{
+    "type", "writeControl", "writeInterval", "enabled", "libs"
+};
+
+
+namespace
+{
+
+std::vector<std::string> keywords(std::vector<std::string> own)
+{
+    own.insert(own.begin(), commonKeywords.begin(), commonKeywords.end());
+    return own;
+}
+
+// (x y z)
+std::string str(const vec3& v)
+{
+    std::ostringstream os;
+    os.precision(10);
+    os << '(' << v.x << ' ' << v.y << ' ' << v.z << ')';
+    return os.str();
+}
+
+// Points of a 2D case must lie in its plane (z = 0): off it they would
+// silently see no particle.
+std::vector<vec3> readPoints(const dictionary& dict, const std::string& key,
+                             const std::string& name, const sphModel& model)
+{
+    const auto points = dict.get<std::vector<vec3>>(key);
+    if (points.empty())
+    {
+        dict.fatalAt(key, "Function object '" + name + "': " + key
+            + " is empty");
+    }
+    if (model.nDimensions != 3)
+    {
+        for (const vec3& x : points)
+        {
+            if (x.z != 0)
+            {
+                dict.fatalAt(key, "Function object '" + name + "': the case"
+                    " is 2D (z = 0) but " + key + " has the point " + str(x));
+            }
+        }
+    }
+    return points;
+}
+
+// Whether x is within distance r of the grid box: farther out no particle
+// can be within r (particles outside the grid are never in a cell), and
+// forEachCandidate must not convert huge or NaN cell indices to int.
+bool nearGrid(const cellGrid& g, const vec3& x, const scalar r)
+{
+    const int n[3] = {g.nx, g.ny, g.nz};
+    for (int d = 0; d < 3; ++d)
+    {
+        const scalar lo = g.origin[d] - r;
+        const scalar hi = g.origin[d] + n[d]*g.cellSize + r;
+        if (!(x[d] >= lo && x[d] <= hi))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Calls f(j) for every fluid particle j within the support of x, with the
+// distance r.
+template<class Kernel, class F>
+void forEachFluidNear(const solverSnapshot& s, const Kernel& kernel,
+                      const vec3& x, const F& f)
+{
+    const scalar support = kernel.support();
+    const scalar support2 = support*support;
+    const cellGrid& g = s.cells.grid;
+    if (!nearGrid(g, x, support) || s.cells.cellStart.empty())
+    {
+        return;
+    }
+    const particleFields& pf = s.particles;
+    forEachCandidate(g, s.cells.cellStart.data(), x, [&](const label j)
+    {
+        if (pf.kind[j] != fluidKind) return;
+        const scalar r2 = magSqr(x - pf.position[j]);
+        if (r2 >= support2) return;
+        f(j, std::sqrt(r2));
+    });
+}
+
+// Fluid volume fraction sum_f V_f W(|x - x_f|): about 1 inside the fluid,
+// 0.5 at a flat free surface, 0 in air.
+template<class Kernel>
+scalar concentration(const solverSnapshot& s, const Kernel& kernel,
+                     const vec3& x)
+{
+    const particleFields& pf = s.particles;
+    scalar c = 0;
+    forEachFluidNear(s, kernel, x, [&](const label j, const scalar r)
+    {
+        c += pf.mass[j]/pf.rho[j]*kernel.W(r);
+    });
+    return c;
+}
+
+// Distance from b along the unit vector u to where the ray leaves the
+// cell grid (0 when it starts outside going out).
+scalar extentAlong(const cellGrid& g, const vec3& b, const vec3& u)
+{
+    const int n[3] = {g.nx, g.ny, g.nz};
+    scalar t = std::numeric_limits<scalar>::max();
+    for (int d = 0; d < 3; ++d)
+    {
+        if (u[d] > 0)
+        {
+            t = std::min(t, (g.origin[d] + n[d]*g.cellSize - b[d])/u[d]);
+        }
+        else if (u[d] < 0)
+        {
+            t = std::min(t, (g.origin[d] - b[d])/u[d]);
+        }
+    }
+    return t > 0 ? t : 0;
+}
+
+struct vecSum
+{
+    vec3 operator()(const vec3& a, const vec3& b) const { return a + b; }
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * table  * * * * * * * * * * * * * * * //
+
+table::table(std::string name, const dictionary& dict,
+             const std::filesystem::path& caseDir,
+             const std::string& startTimeName, std::string file)
+:
+    functionObject(std::move(name), dict, caseDir, startTimeName),
+    file_(std::move(file))
+{}
+
+
+void table::sample(const solverSnapshot& s)
+{
+    const std::vector<scalar> row = values(s);
+    std::ofstream& os = output(file_);
+    if (!headerWritten_)
+    {
+        writeHeader(os);
+        headerWritten_ = true;
+    }
+    os << s.time;
+    for (const scalar v : row)
+    {
+        os << ' ' << v;
+    }
+    os << '\n';
+    os.flush();
+    if (!os)
+    {
+        fatalError("Function object '" + name() + "': cannot write "
+            + file_ + " (disk full?)");
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * * probes * * * * * * * * * * * * * * * //
+
+probes::probes(std::string name, const dictionary& dict,
+               const std::filesystem::path& caseDir,
+               const std::string& startTimeName, const sphModel& model)
+:
+    table(std::move(name), dict, caseDir, startTimeName, "p.dat")
+{
+    dict.checkKeywords(keywords({"fields", "probeLocations"}));
+    if (dict.found("fields"))
+    {
+        const auto fields = dict.get<std::vector<std::string>>("fields");
+        if (fields.empty())
+        {
+            dict.fatalAt("fields", "Function object '" + this->name()
+                + "': fields is empty; probes samples (p)");
+        }
+        for (const auto& f : fields)
+        {
+            if (f != "p")
+            {
+                dict.fatalAt("fields", "Function object '" + this->name()
+                    + "': probes cannot sample field '" + f
+                    + "'; the only field supported is p");
+            }
+        }
+    }
+    locations_ = readPoints(dict, "probeLocations", this->name(), model);
+}
+
+
+std::vector<scalar> probes::values(const solverSnapshot& s) const
+{
+    std::vector<scalar> p(locations_.size(), 0);
+    const particleFields& pf = s.particles;
+    withKernel(s.model, [&](auto kernel)
+    {
+        for (std::size_t k = 0; k < locations_.size(); ++k)
+        {
+            scalar sumW = 0, sumP = 0;
+            forEachFluidNear(s, kernel, locations_[k],
+                [&](const label j, const scalar r)
+                {
+                    const scalar WV = kernel.W(r)*pf.mass[j]/pf.rho[j];
+                    sumW += WV;
+                    sumP += pf.p[j]*WV;
+                });
+            p[k] = sumW > 0 ? sumP/sumW : 0;
+        }
+    });
+    return p;
+}
+
+
+void probes::writeHeader(std::ostream& os) const
+{
+    for (std::size_t k = 0; k < locations_.size(); ++k)
+    {
+        os << "# Probe " << k << ' ' << str(locations_[k]) << '\n';
+    }
+    os << "# Time";
+    for (std::size_t k = 0; k < locations_.size(); ++k)
+    {
+        os << " p" << k;
+    }
+    os << '\n';
+}
+
+
+// * * * * * * * * * * * * * * * freeSurfaceGauges  * * * * * * * * * * * * //
+
+freeSurfaceGauges::freeSurfaceGauges(std::string name,
+    const dictionary& dict, const std::filesystem::path& caseDir,
+    const std::string& startTimeName, const sphModel& model)
+:
+    table(std::move(name), dict, caseDir, startTimeName, "height.dat"),
+    maxHeight_(0)
+{
+    dict.checkKeywords(keywords({"locations", "maxHeight"}));
+    locations_ = readPoints(dict, "locations", this->name(), model);
+    if (dict.found("maxHeight"))
+    {
+        maxHeight_ = dict.getPositive("maxHeight");
+    }
+    const scalar magG = mag(model.g);
+    if (!(magG > 0))
+    {
+        dict.fatalAt("type", "Function object '" + this->name()
+            + "': freeSurfaceGauges measure against gravity, but g is zero"
+              " (constant/g)");
+    }
+    up_ = (-1/magG)*model.g;
+}
+
+
+std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
+{
+    std::vector<scalar> heights(locations_.size(), 0);
+    withKernel(s.model, [&](auto kernel)
+    {
+        const scalar ds = 0.25*s.model.dp;
+        for (std::size_t k = 0; k < locations_.size(); ++k)
+        {
+            const vec3& b = locations_[k];
+            const scalar sMax = maxHeight_ > 0
+              ? maxHeight_ : extentAlong(s.cells.grid, b, up_);
+            const label n = label(std::ceil(sMax/ds));
+            const auto at = [&](label i)
+            {
+                return std::min(i*ds, sMax);
+            };
+            // From the top down: the first c >= 0.5 met is the last
+            // crossing from inside to outside, and the scan stops there.
+            scalar cAbove = 0;
+            for (label i = n; i >= 0; --i)
+            {
+                const scalar c = concentration(s, kernel, b + at(i)*up_);
+                if (c >= 0.5)
+                {
+                    heights[k] = i == n
+                      ? sMax
+                      : at(i) + (at(i + 1) - at(i))*(c - 0.5)/(c - cAbove);
+                    break;
+                }
+                cAbove = c;
+            }
+        }
+    });
+    return heights;
+}
+
+
+void freeSurfaceGauges::writeHeader(std::ostream& os) const
+{
+    for (std::size_t k = 0; k < locations_.size(); ++k)
+    {
+        os << "# Gauge " << k << ' ' << str(locations_[k]) << '\n';
+    }
+    os << "# Time";
+    for (std::size_t k = 0; k < locations_.size(); ++k)
+    {
+        os << " h" << k;
+    }
+    os << '\n';
+}
+
+
+// * * * * * * * * * * * * * * * * * * forces * * * * * * * * * * * * * * * //
+
+forces::forces(std::string name, const dictionary& dict,
+               const std::filesystem::path& caseDir,
+               const std::string& startTimeName,
+               const std::vector<bodyInfo>& bodies)
+:
+    table(std::move(name), dict, caseDir, startTimeName, "force.dat"),
+    body_(-1)
+{
+    dict.checkKeywords(keywords({"body"}));
+    const std::string body = dict.get<std::string>("body");
+    std::vector<std::string> walls;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+        if (bodies[i].type == bodyType::wall)
+        {
+            walls.push_back(bodies[i].name);
+            if (bodies[i].name == body)
+            {
+                body_ = label(i);
+            }
+        }
+    }
+    if (body_ < 0)
+    {
+        std::string list = "(";
+        for (std::size_t i = 0; i < walls.size(); ++i)
+        {
+            list += (i ? " " : "") + walls[i];
+        }
+        list += ")";
+        std::string what = "there is no body '" + body + "'";
+        for (const auto& b : bodies)
+        {
+            if (b.name == body)
+            {
+                what = "'" + body + "' is a " + bodyTypeName(b.type)
+                     + " body, not a wall";
+            }
+        }
+        dict.fatalAt("body", "Function object '" + this->name() + "': "
+            + what + ". Wall bodies: " + list);
+    }
+}
+
+
+std::vector<scalar> forces::values(const solverSnapshot& s) const
+{
+    const particleFields& pf = s.particles;
+    const sphModel& m = s.model;
+    const std::uint8_t body = std::uint8_t(body_);
+    const bool laminar = m.viscosity == viscosityType::laminar;
+    const scalar fourNu = 4*m.nu;
+    const scalar eta2 = m.eta2();
+    vec3 F{0, 0, 0};
+
+    withKernel(m, [&](auto kernel)
+    {
+        // Minus the rate of momentum the wall gives the fluid, pair by
+        // pair: the pressure term and the laminar viscous term of the
+        // fluid's momentum equation (fluidRatesOp). The artificial
+        // viscosity is left out: it is a numerical stabiliser, small in a
+        // resolved flow, not a physical stress.
+        const auto onWall = [&](const label w)
+        {
+            vec3 f{0, 0, 0};
+            if (pf.kind[w] != wallKind || pf.body[w] != body) return f;
+            const vec3 xw = pf.position[w];
+            const vec3 vw = pf.velocity[w];
+            const scalar mw = pf.mass[w];
+            const scalar rhow = pf.rho[w];
+            const scalar pw = pf.p[w];
+            forEachFluidNear(s, kernel, xw, [&](const label j, const scalar r)
+            {
+                if (r <= 0) return;
+                const vec3 d = pf.position[j] - xw;      // x_fw
+                const scalar G = kernel.gradFactor(r);
+                const scalar mf = pf.mass[j];
+                const scalar rhof = pf.rho[j];
+                // a_f -= m_w (p_f + p_w)/(rho_f rho_w) G x_fw
+                f += (mf*mw*(pf.p[j] + pw)/(rhof*rhow)*G)*d;
+                if (laminar)
+                {
+                    const scalar r2 = r*r;
+                    // a_f += m_w 4 nu G r^2/((rho_f + rho_w)(r^2 + eta^2))
+                    //        v_fw
+                    f -= (mf*mw*fourNu*G*r2/((rhof + rhow)*(r2 + eta2)))
+                        *(pf.velocity[j] - vw);
+                }
+            });
+            return f;
+        };
+        F = parallelReduce(openmpExec{}, pf.size(), onWall,
+                           vec3{0, 0, 0}, vecSum{});
+    });
+    return {F.x, F.y, F.z};
+}
+
+
+void forces::writeHeader(std::ostream& os) const
+{
+    os << "# Time Fx Fy Fz\n";
+}
+
+
+// * * * * * * * * * * * * * * * * * * energy * * * * * * * * * * * * * * * //
+
+energy::energy(std::string name, const dictionary& dict,
+               const std::filesystem::path& caseDir,
+               const std::string& startTimeName)
+:
+    table(std::move(name), dict, caseDir, startTimeName, "energy.dat")
+{
+    dict.checkKeywords(commonKeywords);
+}
+
+
+std::vector<scalar> energy::values(const solverSnapshot& s) const
+{
+    const particleFields& pf = s.particles;
+    const vec3 g = s.model.g;
+    // (mass, kinetic, potential) in a vec3 for the reduction.
+    const vec3 e = parallelReduce(openmpExec{}, pf.size(),
+        [&](const label i)
+        {
+            if (pf.kind[i] != fluidKind) return vec3{0, 0, 0};
+            const scalar m = pf.mass[i];
+            return vec3{m, 0.5*m*magSqr(pf.velocity[i]),
+                        -m*dot(g, pf.position[i])};
+        },
+        vec3{0, 0, 0}, vecSum{});
+    return {e.x, e.y, e.z};
+}
+
+
+void energy::writeHeader(std::ostream& os) const
+{
+    os << "# Time mass kinetic potential\n";
+}
+
+
+// * * * * * * * * * * * * * * * * * surgeFront * * * * * * * * * * * * * * //
+
+surgeFront::surgeFront(std::string name, const dictionary& dict,
+                       const std::filesystem::path& caseDir,
+                       const std::string& startTimeName)
+:
+    table(std::move(name), dict, caseDir, startTimeName, "front.dat"),
+    origin_(dict.getOrDefault<vec3>("origin", vec3{0, 0, 0}))
+{
+    dict.checkKeywords(keywords({"direction", "origin"}));
+    const vec3 d = dict.get<vec3>("direction");
+    const scalar magD = mag(d);
+    if (!(magD > 0) || !std::isfinite(magD))
+    {
+        dict.fatalAt("direction", "Function object '" + this->name()
+            + "': direction must be a non-zero vector, found " + str(d));
+    }
+    direction_ = (1/magD)*d;
+}
+
+
+std::vector<scalar> surgeFront::values(const solverSnapshot& s) const
+{
+    const particleFields& pf = s.particles;
+    const scalar none = -std::numeric_limits<scalar>::infinity();
+    const scalar front = parallelReduce(openmpExec{}, pf.size(),
+        [&](const label i)
+        {
+            return pf.kind[i] == fluidKind
+              ? dot(pf.position[i] - origin_, direction_) : none;
+        },
+        none,
+        [](const scalar a, const scalar b) { return a > b ? a : b; });
+    // No fluid left: 0 rather than -inf in the table.
+    return {front == none ? 0 : front};
+}
+
+
+void surgeFront::writeHeader(std::ostream& os) const
+{
+    os << "# Time front\n";
+}
+
+} // End namespace functionObjects
+} // End namespace sphvcpm

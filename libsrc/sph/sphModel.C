@@ -1,0 +1,248 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "sphModel.H"
+#include "error.H"
+
+#include <cmath>
+
+namespace sphvcpm
+{
+
+std::string kernelName(const kernelType k)
+{
+    return k == kernelType::wendlandC2 ? "wendlandC2" : "cubicSpline";
+}
+
+std::string densityDiffusionName(const densityDiffusionType d)
+{
+    switch (d)
+    {
+        case densityDiffusionType::none: return "none";
+        case densityDiffusionType::molteniColagrossi:
+            return "molteniColagrossi";
+        default: return "fourtakas";
+    }
+}
+
+std::string viscosityName(const viscosityType v)
+{
+    return v == viscosityType::laminar ? "laminar" : "artificial";
+}
+
+std::string shiftingName(const shiftingType s)
+{
+    return s == shiftingType::none ? "none" : "fickian";
+}
+
+
+namespace
+{
+
+dictionary readCaseDict(const std::filesystem::path& caseDir,
+                        const std::string& relative, bool required)
+{
+    const auto file = caseDir/relative;
+    if (!std::filesystem::exists(file))
+    {
+        if (required)
+        {
+            fatalIOError(file.string(), 0,
+                "cannot find the file " + relative + " of the case");
+        }
+        return dictionary(file.string());
+    }
+    return dictionary::fromFile(file);
+}
+
+// A sub-dictionary with a required 'type' word, or a plain word entry
+// (densityDiffusion none;) meaning the type alone.
+std::string typeOf(const dictionary& dict, const std::string& key,
+                   const std::vector<std::string>& allowed,
+                   const std::string& deflt, const dictionary** sub)
+{
+    *sub = nullptr;
+    if (!dict.found(key))
+    {
+        return deflt;
+    }
+    if (dict.isDict(key))
+    {
+        *sub = &dict.subDict(key);
+        return (*sub)->getWord("type", allowed);
+    }
+    return dict.getWord(key, allowed);
+}
+
+} // End anonymous namespace
+
+
+sphModel readSphModel(const std::filesystem::path& caseDir,
+                      const int nDimensions, const scalar dp)
+{
+    sphModel m;
+    m.nDimensions = nDimensions;
+    m.dp = dp;
+
+    // system/sphSchemes
+    {
+        const dictionary dict = readCaseDict(caseDir, "system/sphSchemes",
+                                             true);
+        dict.checkKeywords({"kernel", "hOverDp", "cellDivisor",
+            "densityDiffusion", "viscosity", "shifting", "boundary",
+            "domain", "initialDensity"});
+
+        m.kernel = dict.getWordOrDefault("kernel",
+            {"wendlandC2", "cubicSpline"}, "wendlandC2") == "wendlandC2"
+          ? kernelType::wendlandC2 : kernelType::cubicSpline;
+
+        m.hOverDp = dict.getOrDefault<scalar>("hOverDp", 1.5);
+        if (!(m.hOverDp >= 0.9 && m.hOverDp <= 3))
+        {
+            dict.fatalAt("hOverDp", "hOverDp " + std::to_string(m.hOverDp)
+                + " is outside the usable range [0.9, 3]"
+                  " (1.5 is recommended)");
+        }
+        m.h = m.hOverDp*dp;
+
+        m.cellDivisor = dict.getOrDefault<label>("cellDivisor", 1);
+        if (m.cellDivisor < 1 || m.cellDivisor > 4)
+        {
+            dict.fatalAt("cellDivisor",
+                "cellDivisor must be 1, 2, 3 or 4 (cells of 2h/cellDivisor)");
+        }
+
+        const dictionary* sub = nullptr;
+        const std::string dd = typeOf(dict, "densityDiffusion",
+            {"fourtakas", "molteniColagrossi", "none"}, "fourtakas", &sub);
+        m.densityDiffusion =
+            dd == "fourtakas" ? densityDiffusionType::fourtakas
+          : dd == "none" ? densityDiffusionType::none
+          : densityDiffusionType::molteniColagrossi;
+        if (sub)
+        {
+            sub->checkKeywords({"type", "delta"});
+            m.delta = sub->getOrDefault<scalar>("delta", 0.1);
+            if (!(m.delta >= 0 && m.delta <= 1))
+            {
+                sub->fatalAt("delta", "delta must be in [0, 1] (0.1 is"
+                    " the usual value)");
+            }
+        }
+
+        const std::string visc = typeOf(dict, "viscosity",
+            {"laminar", "artificial"}, "laminar", &sub);
+        m.viscosity = visc == "laminar"
+          ? viscosityType::laminar : viscosityType::artificial;
+        if (sub)
+        {
+            sub->checkKeywords({"type", "alpha"});
+            if (m.viscosity == viscosityType::artificial)
+            {
+                m.alpha = sub->getPositive("alpha");
+            }
+        }
+
+        const std::string shift = typeOf(dict, "shifting",
+            {"none", "fickian"}, "none", &sub);
+        m.shifting = shift == "none" ? shiftingType::none
+                                     : shiftingType::fickian;
+        if (sub)
+        {
+            sub->checkKeywords({"type", "coefficient",
+                "freeSurfaceThreshold", "maxShift", "noBoundary"});
+            m.shiftCoefficient =
+                sub->getOrDefault<scalar>("coefficient", -2);
+            m.shiftFreeSurface = sub->getOrDefault<scalar>(
+                "freeSurfaceThreshold", nDimensions == 3 ? 2.75 : 1.5);
+            m.maxShiftFraction = sub->getOrDefault<scalar>("maxShift", 0.1);
+            m.shiftNoBoundary = sub->getOrDefault<bool>("noBoundary", true);
+        }
+        else if (m.shifting == shiftingType::fickian)
+        {
+            m.shiftFreeSurface = nDimensions == 3 ? 2.75 : 1.5;
+        }
+
+        dict.getWordOrDefault("boundary", {"adami"}, "adami");
+        m.hydrostaticStart = dict.getWordOrDefault("initialDensity",
+            {"hydrostatic", "asRead"}, "hydrostatic") == "hydrostatic";
+
+        if (const dictionary* dom = dict.findDict("domain"))
+        {
+            dom->checkKeywords({"min", "max"});
+            m.userDomain = true;
+            m.domainMin = dom->get<vec3>("min");
+            m.domainMax = dom->get<vec3>("max");
+            for (int d = 0; d < nDimensions; ++d)
+            {
+                if (!(m.domainMax[d] > m.domainMin[d]))
+                {
+                    dom->fatalAt("max", "domain max must exceed min in"
+                        " every direction");
+                }
+            }
+        }
+    }
+
+    // constant/fluidProperties
+    {
+        const dictionary dict =
+            readCaseDict(caseDir, "constant/fluidProperties", true);
+        dict.checkKeywords({"rho0", "nu", "c0", "coefSound", "gamma",
+            "turbulence"});
+        m.rho0 = dict.getPositive("rho0");
+        m.nu = dict.getOrDefault<scalar>("nu", 1e-6);
+        if (!(m.nu >= 0))
+        {
+            dict.fatalAt("nu", "the kinematic viscosity nu must be >= 0");
+        }
+        const bool hasC0 = dict.found("c0");
+        const bool hasCoef = dict.found("coefSound");
+        if (hasC0 == hasCoef)
+        {
+            dict.fatal("give exactly one of c0 (speed of sound [m/s]) and"
+                " coefSound (c0 = coefSound sqrt(g H), H the fluid height)",
+                hasC0 ? "c0" : "c0");
+        }
+        if (hasC0)
+        {
+            m.c0 = dict.getPositive("c0");
+        }
+        else
+        {
+            m.coefSound = dict.getPositive("coefSound");
+        }
+        m.gamma = dict.getOrDefault<scalar>("gamma", 7);
+        if (!(m.gamma >= 1))
+        {
+            dict.fatalAt("gamma", "the Tait exponent gamma must be >= 1");
+        }
+        m.sps = dict.getWordOrDefault("turbulence", {"off", "SPS"}, "off")
+             == "SPS";
+    }
+
+    // constant/g (OpenFOAM's uniformDimensionedVectorField); default:
+    // -9.81 along y in 2D and along z in 3D.
+    {
+        const auto file = caseDir/"constant/g";
+        if (std::filesystem::exists(file))
+        {
+            const dictionary dict = dictionary::fromFile(file);
+            dict.checkKeywords({"dimensions", "value"});
+            m.g = dict.get<vec3>("value");
+            if (nDimensions == 2 && m.g.z != 0)
+            {
+                dict.fatalAt("value", "a 2D case lies in the x-y plane:"
+                    " gravity must have z = 0");
+            }
+        }
+        else
+        {
+            m.g = nDimensions == 3 ? vec3{0, 0, -9.81} : vec3{0, -9.81, 0};
+        }
+    }
+
+    return m;
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,843 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "sphSolver.H"
+#include "argList.H"
+#include "error.H"
+#include "fluidInteractions.H"
+#include "parallel.H"
+#include "withKernel.H"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+namespace sphvcpm
+{
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+std::string str(const scalar v, int precision = 6)
+{
+    std::ostringstream os;
+    os << std::setprecision(precision) << v;
+    return os.str();
+}
+
+std::string str(const vec3& v)
+{
+    return "(" + str(v.x, 8) + " " + str(v.y, 8) + " " + str(v.z, 8) + ")";
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Construction * * * * * * * * * * * * * * //
+
+sphSolver::sphSolver(const fs::path& caseDir, std::ostream& log)
+:
+    caseDir_(caseDir),
+    log_(log),
+    control_(timeControl::read(caseDir))
+{
+    if (control_.device != "cpu")
+    {
+        fatalIOError((caseDir/"system/controlDict").string(),
+            control_.dict.lookupEntry("device").line(),
+            "device " + control_.device + " is not available in this"
+            " build of sphVcpmFsi; use device cpu", "device");
+    }
+    readStartTime();
+    setSoundSpeed();
+    eos_ = taitEquationOfState(model_.rho0, model_.c0, model_.gamma);
+    if (freshStart_ && model_.hydrostaticStart)
+    {
+        setHydrostaticDensity();
+    }
+    setDomain();
+
+    log_<< "Fluid model\n"
+        << "    kernel " << kernelName(model_.kernel)
+        << ", h = " << model_.hOverDp << " dp = " << model_.h << " m"
+        << ", cells of 2h/" << model_.cellDivisor << "\n"
+        << "    Tait EOS: rho0 = " << model_.rho0 << " kg/m^3, c0 = "
+        << model_.c0 << " m/s, gamma = " << model_.gamma << "\n"
+        << "    density diffusion "
+        << densityDiffusionName(model_.densityDiffusion)
+        << " (delta " << model_.delta << ")\n"
+        << "    viscosity " << viscosityName(model_.viscosity);
+    if (model_.viscosity == viscosityType::laminar)
+    {
+        log_<< " (nu " << model_.nu << " m^2/s)";
+    }
+    else
+    {
+        log_<< " (alpha " << model_.alpha << ")";
+    }
+    log_<< ", turbulence " << (model_.sps ? "SPS" : "off") << "\n"
+        << "    shifting " << shiftingName(model_.shifting)
+        << ", walls: Adami extrapolated pressure\n"
+        << "    g = " << str(model_.g) << "\n"
+        << "    domain " << str(grid_.origin) << " "
+        << grid_.nx << " x " << grid_.ny << " x " << grid_.nz
+        << " cells of " << grid_.cellSize << " m\n"
+        << "    " << particles_.bytesPerParticle()
+        << " bytes per particle\n" << std::endl;
+
+    functions_ = functionObject::readAll(control_.dict, caseDir_,
+        startTimeName_, model_, bodies_);
+
+    sortParticles();
+    parallelFor(openmpExec{}, particles_.size(),
+        pressureOp{particles_.view(), eos_});
+    updateWalls();
+}
+
+
+sphSolver::~sphSolver() = default;
+
+
+void sphSolver::readStartTime()
+{
+    const auto times = findTimes(caseDir_);
+    const std::string controlFile = (caseDir_/"system/controlDict").string();
+    if (times.empty())
+    {
+        fatalError("No time directory in " + caseDir_.string()
+            + ": run generateParticles first to write 0/");
+    }
+    switch (control_.startFrom)
+    {
+        case startFromType::latestTime:
+            startTimeName_ = times.back().name;
+            break;
+        case startFromType::firstTime:
+            startTimeName_ = times.front().name;
+            break;
+        case startFromType::startTime:
+        {
+            auto it = std::find_if(times.begin(), times.end(),
+                [&](const timeInstant& t)
+                {
+                    return std::fabs(t.value - control_.startTime)
+                        <= 1e-12*std::max(1.0, std::fabs(t.value));
+                });
+            if (it == times.end())
+            {
+                std::string list;
+                for (const auto& t : times) list += " " + t.name;
+                fatalIOError(controlFile,
+                    control_.dict.lookupEntry("startTime").line(),
+                    "startTime " + str(control_.startTime)
+                    + " has no time directory; the case has:" + list,
+                    "startTime");
+            }
+            startTimeName_ = it->name;
+            break;
+        }
+    }
+
+    const timeState state = readTimeState(caseDir_, startTimeName_);
+    // Index 0: the initial state (generateParticles), not a solver write.
+    freshStart_ = state.index == 0;
+    time_ = state.value;
+    timeIndex_ = state.index;
+    beginTime_ = time_;
+    deltaT_ = control_.deltaT;
+    deltaT0_ = state.deltaT > 0 ? state.deltaT : control_.deltaT;
+
+    log_<< "Reading time " << startTimeName_ << "\n";
+    std::vector<particleBody> bodies =
+        readTimeDirectory(caseDir_, startTimeName_);
+
+    int nDim = 0;
+    scalar dp = 0;
+    label nTotal = 0;
+    for (const particleBody& b : bodies)
+    {
+        if (b.type() == bodyType::solid)
+        {
+            fatalError("Body " + b.name() + " of time " + startTimeName_
+                + " is a solid: elastic (VCPM) solids are not supported by"
+                  " this version of sphVcpmFsi; use fluid and wall bodies");
+        }
+        if (b.type() == bodyType::fluid && dp == 0)
+        {
+            dp = b.dp();
+        }
+        if (nDim != 0 && b.nDimensions() != nDim)
+        {
+            fatalError("Bodies of time " + startTimeName_ + " disagree on"
+                " nDimensions (" + b.name() + " has "
+                + std::to_string(b.nDimensions()) + ")");
+        }
+        nDim = b.nDimensions();
+        nTotal += b.size();
+    }
+    if (dp == 0)
+    {
+        fatalError("Time " + startTimeName_ + " of " + caseDir_.string()
+            + " has no fluid body: sphVcpmFsi needs one");
+    }
+    if (bodies.size() > 250)
+    {
+        fatalError("More than 250 bodies are not supported");
+    }
+    for (const particleBody& b : bodies)
+    {
+        if (std::fabs(b.dp() - dp) > 1e-9*dp)
+        {
+            fatalError("Body " + b.name() + " has dp " + str(b.dp())
+                + " but the fluid has dp " + str(dp) + ": fluid and wall"
+                  " particles must share one spacing");
+        }
+    }
+
+    model_ = readSphModel(caseDir_, nDim, dp);
+
+    particles_.resize(nTotal, model_.sps,
+                      model_.shifting != shiftingType::none);
+    const scalar defaultMass = model_.rho0*std::pow(dp, nDim);
+    label k = 0;
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+    {
+        const particleBody& body = bodies[b];
+        bodies_.push_back({body.name(), body.type(), body.dp(), 0});
+        const label n = body.size();
+        const auto& x = body.position();
+        const auto& ids = body.id();
+        const bool hasU = body.hasField("U");
+        const bool hasRho = body.hasField("rho");
+        const bool hasMass = body.hasField("mass");
+        for (label i = 0; i < n; ++i, ++k)
+        {
+            particles_.position[k] = x[i];
+            particles_.velocity[k] =
+                hasU ? body.vectorField("U")[i] : vec3{0, 0, 0};
+            particles_.rho[k] =
+                hasRho ? body.scalarField("rho")[i] : model_.rho0;
+            particles_.mass[k] =
+                hasMass ? body.scalarField("mass")[i] : defaultMass;
+            particles_.kind[k] =
+                body.type() == bodyType::fluid ? fluidKind : wallKind;
+            particles_.body[k] = std::uint8_t(b);
+            particles_.id[k] = ids[i];
+            if (!(particles_.rho[k] > 0) || !(particles_.mass[k] > 0))
+            {
+                fatalError("Body " + body.name() + " of time "
+                    + startTimeName_ + ": particle id "
+                    + std::to_string(ids[i]) + " has a non-positive"
+                    " density or mass");
+            }
+        }
+        log_<< "    " << body.name() << " (" << bodyTypeName(body.type())
+            << "): " << n << " particles\n";
+    }
+    log_<< "    dp = " << dp << " m, " << nDim << "D, time = " << time_
+        << "\n" << std::endl;
+}
+
+
+void sphSolver::setSoundSpeed()
+{
+    // Fluid height H along gravity and the largest initial speed.
+    const scalar gMag = mag(model_.g);
+    const vec3 up = gMag > 0 ? (-1/gMag)*model_.g : vec3{0, 0, 0};
+    scalar lo = std::numeric_limits<scalar>::max(), hi = -lo, u2 = 0;
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        if (particles_.kind[i] != fluidKind) continue;
+        const scalar z = dot(up, particles_.position[i]);
+        lo = std::min(lo, z);
+        hi = std::max(hi, z);
+        u2 = std::max(u2, magSqr(particles_.velocity[i]));
+    }
+    fluidHeight_ = gMag > 0 ? hi - lo + model_.dp : 0;
+
+    const std::string file = (caseDir_/"constant/fluidProperties").string();
+    const scalar uGravity = std::sqrt(gMag*fluidHeight_);
+    if (model_.coefSound > 0)
+    {
+        model_.c0 = model_.coefSound*std::max(uGravity, std::sqrt(u2));
+        if (!(model_.c0 > 0))
+        {
+            fatalIOError(file, 0, "coefSound needs gravity or an initial"
+                " velocity to set c0; give c0 instead", "coefSound");
+        }
+    }
+
+    // Weak compressibility needs c0 >= 10 U; the largest speed expected is
+    // the free-fall speed over the fluid height or the initial speed.
+    const scalar uExpected = std::max(std::sqrt(2*gMag*fluidHeight_),
+                                      std::sqrt(u2));
+    const scalar c0Min = 10*uExpected;
+    if (model_.c0 < 3*uExpected)
+    {
+        fatalIOError(file, 0, "the speed of sound c0 = " + str(model_.c0)
+            + " m/s is far too low for this scene: the fluid (height "
+            + str(fluidHeight_) + " m) reaches about " + str(uExpected)
+            + " m/s, so c0 must be at least 10 times that, "
+            + str(c0Min) + " m/s (density errors grow as (U/c0)^2)", "c0");
+    }
+    if (model_.c0 < c0Min)
+    {
+        warning("The speed of sound c0 = " + str(model_.c0) + " m/s is below "
+            + str(c0Min) + " m/s, 10 times the speed expected in this scene"
+            " (" + str(uExpected) + " m/s): expect density errors of about "
+            + str(100*uExpected*uExpected/(model_.c0*model_.c0), 2) + " %",
+            file);
+    }
+    const scalar h = model_.h;
+    if (model_.viscosity == viscosityType::laminar && model_.nu > 0)
+    {
+        // Nothing to check: the viscous limit enters the step.
+        (void)h;
+    }
+}
+
+
+void sphSolver::setHydrostaticDensity()
+{
+    // rho = rho0 (1 + rho0 |g| (top - z)/B)^(1/gamma) below the top of each
+    // fluid body (its highest particle + dp/2), so that a still fluid
+    // starts at rest instead of settling through pressure waves.
+    const scalar gMag = mag(model_.g);
+    if (gMag == 0) return;
+    const vec3 up = (-1/gMag)*model_.g;
+    std::vector<scalar> top(bodies_.size(), -1e300);
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        if (particles_.kind[i] != fluidKind) continue;
+        scalar& t = top[particles_.body[i]];
+        t = std::max(t, dot(up, particles_.position[i]) + 0.5*model_.dp);
+    }
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        if (particles_.kind[i] != fluidKind) continue;
+        const scalar depth =
+            top[particles_.body[i]] - dot(up, particles_.position[i]);
+        particles_.rho[i] = eos_.density(model_.rho0*gMag*depth);
+    }
+    log_<< "Initial fluid density: hydrostatic below the top of each fluid"
+        << " body\n" << std::endl;
+}
+
+
+void sphSolver::setDomain()
+{
+    vec3 lo, hi;
+    if (model_.userDomain)
+    {
+        lo = model_.domainMin;
+        hi = model_.domainMax;
+    }
+    else
+    {
+        // Bounding box of all particles with a margin; against gravity the
+        // box doubles, so that splashes are not lost.
+        lo = vec3{1e300, 1e300, 1e300};
+        hi = -lo;
+        for (const vec3& x : particles_.position)
+        {
+            for (int d = 0; d < 3; ++d)
+            {
+                lo[d] = std::min(lo[d], x[d]);
+                hi[d] = std::max(hi[d], x[d]);
+            }
+        }
+        const scalar gMag = mag(model_.g);
+        for (int d = 0; d < model_.nDimensions; ++d)
+        {
+            const scalar size = hi[d] - lo[d];
+            const scalar margin = 0.1*size + 2*model_.h;
+            lo[d] -= margin;
+            hi[d] += margin;
+            if (gMag > 0 && model_.g[d] < -0.5*gMag)
+            {
+                hi[d] += size;
+            }
+            else if (gMag > 0 && model_.g[d] > 0.5*gMag)
+            {
+                lo[d] -= size;
+            }
+        }
+    }
+    grid_ = makeCellGrid(lo, hi, 2*model_.h, model_.cellDivisor,
+                         model_.nDimensions);
+    model_.domainMin = lo;
+    model_.domainMax = hi;
+}
+
+
+// * * * * * * * * * * * * * * * * * * Steps  * * * * * * * * * * * * * * * //
+
+void sphSolver::sortParticles()
+{
+    const label n = particles_.size();
+    buildCellList(openmpExec{}, grid_, particles_.position.data(), n, cells_);
+    const label nInside = cells_.nInside;
+    if (nInside < n)
+    {
+        // Particles past the domain bounds sorted to the end: count them
+        // per body, then drop them.
+        std::map<int, label> lost;
+        for (label k = nInside; k < n; ++k)
+        {
+            const label i = cells_.order[k];
+            if (particles_.kind[i] != fluidKind)
+            {
+                fatalError("Wall particle " + describeParticle(i)
+                    + " lies outside the domain bounds " + str(grid_.origin)
+                    + " .. " + str(model_.domainMax)
+                    + ": enlarge the domain of system/sphSchemes");
+            }
+            if (!isFinite(particles_.position[i]))
+            {
+                blowUp(i, "a non-finite position", false, false, 0);
+            }
+            ++lost[particles_.body[i]];
+        }
+        for (const auto& [b, count] : lost)
+        {
+            bodies_[b].nRemoved += count;
+            log_<< "Removed " << count << " particle"
+                << (count > 1 ? "s" : "") << " of " << bodies_[b].name
+                << " that left the domain (" << bodies_[b].nRemoved
+                << " in all)" << std::endl;
+        }
+    }
+    particles_.reorder(cells_.order, nInside, model_.sps,
+                       model_.shifting != shiftingType::none);
+}
+
+
+void sphSolver::updateWalls()
+{
+    const particleView v = particles_.view();
+    const scalar support2 = 4*model_.h*model_.h;
+    withKernel(model_, [&](auto kernel)
+    {
+        using K = decltype(kernel);
+        parallelFor(openmpExec{}, v.n, adamiWallOp<K>{kernel, grid_,
+            cells_.cellStart.data(), v, eos_, support2, model_.g});
+        if (model_.sps)
+        {
+            const scalar filter = model_.dp
+                /std::sqrt(scalar(model_.nDimensions));
+            const scalar cs = model_.smagorinsky*filter;
+            parallelFor(openmpExec{}, v.n, spsStressOp<K>{kernel, grid_,
+                cells_.cellStart.data(), v, support2, cs*cs,
+                (2.0/3.0)*model_.blinn*filter*filter});
+        }
+    });
+}
+
+
+void sphSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
+                             scalar& maxVel2, label& firstBad)
+{
+    const particleView v = particles_.view();
+    pairConstants c;
+    c.h = model_.h;
+    c.support2 = 4*model_.h*model_.h;
+    c.eta2 = model_.eta2();
+    c.c0 = model_.c0;
+    c.rho0 = model_.rho0;
+    c.g = model_.g;
+    c.laminar = model_.viscosity == viscosityType::laminar;
+    c.fourNu = 4*model_.nu;
+    c.alphaC0H = model_.alpha*model_.c0*model_.h;
+    c.ddtCoefficient =
+        model_.densityDiffusion == densityDiffusionType::none
+      ? 0 : model_.delta*2*model_.h*model_.c0;
+    c.hydrostaticFactor =
+        model_.densityDiffusion == densityDiffusionType::fourtakas
+      ? model_.rho0/(model_.c0*model_.c0) : 0;
+    c.sps = model_.sps;
+    c.shifting = model_.shifting != shiftingType::none;
+    c.shiftNoBoundary = model_.shiftNoBoundary;
+    c.tensileInvWdp = model_.kernel == kernelType::cubicSpline
+      ? 1/cubicSplineKernel(model_.h, model_.nDimensions).W(model_.dp) : 0;
+
+    stepTerms t = stepTerms::identity(v.n);
+    withKernel(model_, [&](auto kernel)
+    {
+        using K = decltype(kernel);
+        t = parallelReduce(openmpExec{}, v.n,
+            fluidRatesOp<K>{kernel, grid_, cells_.cellStart.data(), v, c},
+            stepTerms::identity(v.n), stepTermsOp{});
+    });
+    maxAcc2 = t.maxAcc2;
+    maxVisc = t.maxVisc;
+    maxVel2 = t.maxVel2;
+    firstBad = t.firstBad;
+}
+
+
+scalar sphSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
+                               const scalar maxVel2)
+{
+    scalar dt = control_.deltaT;
+    if (control_.adjustTimeStep)
+    {
+        // theory.md §5.8 (DualSPHysics): force and acoustic-viscous limits.
+        const scalar h = model_.h;
+        const scalar maxAcc = std::sqrt(maxAcc2);
+        const scalar dtForce = maxAcc > 0
+          ? std::sqrt(h/maxAcc) : std::numeric_limits<scalar>::max();
+        const scalar speed = std::max(model_.c0, 10*std::sqrt(maxVel2));
+        const scalar dtAcoustic = h/(speed + h*maxVisc);
+        dt = control_.maxCo*std::min(dtForce, dtAcoustic);
+        if (model_.viscosity == viscosityType::laminar && model_.nu > 0)
+        {
+            dt = std::min(dt, 0.125*h*h/model_.nu);
+        }
+        dt = std::min(dt, control_.maxDeltaT);
+    }
+
+    // Land on write times (adjustableRunTime) and on endTime.
+    writeNow_ = false;
+    scalar target = control_.endTime;
+    if (control_.writeControl == writeControlType::adjustableRunTime)
+    {
+        target = std::min(target, nextWriteTime_);
+    }
+    const scalar remaining = target - time_;
+    if (remaining <= dt*(1 + 1e-9))
+    {
+        dt = remaining;
+        writeNow_ = true;
+    }
+    else if (remaining < 2*dt)
+    {
+        dt = 0.5*remaining;    // two even steps rather than a sliver
+    }
+    return dt;
+}
+
+
+void sphSolver::step()
+{
+    sortParticles();
+    particleView v = particles_.view();
+
+    updateWalls();
+    scalar maxAcc2, maxVisc, maxVel2;
+    label bad;
+    computeRates(maxAcc2, maxVisc, maxVel2, bad);
+    if (bad < v.n)
+    {
+        blowUp(bad, "a non-finite acceleration or density rate", false,
+               false, 0);
+    }
+
+    const scalar dt = chooseDeltaT(maxAcc2, maxVisc, maxVel2);
+    if (dt < control_.minDeltaT && !writeNow_)
+    {
+        // The particle that limits the step.
+        label worst = 0;
+        scalar worstAcc = -1;
+        for (label i = 0; i < v.n; ++i)
+        {
+            if (v.kind[i] != fluidKind) continue;
+            const scalar a = magSqr(v.acceleration[i] + model_.g);
+            if (a > worstAcc) { worstAcc = a; worst = i; }
+        }
+        blowUp(worst, "a time step of " + str(dt) + " s, below minDeltaT "
+            + str(control_.minDeltaT) + " s (the largest acceleration, "
+            + str(std::sqrt(worstAcc)) + " m/s^2, is at this particle)",
+            false, false, 0);
+    }
+
+    parallelFor(openmpExec{}, v.n, predictorOp{v, eos_, model_.g, dt});
+
+    updateWalls();
+    computeRates(maxAcc2, maxVisc, maxVel2, bad);
+    if (bad < v.n)
+    {
+        blowUp(bad, "a non-finite acceleration or density rate", true,
+               false, dt);
+    }
+
+    correctorOp corrector{v, eos_, model_.g, dt,
+        model_.shifting != shiftingType::none,
+        model_.shiftCoefficient*model_.h, model_.shiftFreeSurface,
+        scalar(model_.nDimensions), model_.maxShiftFraction*model_.dp};
+    bad = parallelReduce(openmpExec{}, v.n, corrector, v.n, minOp());
+    if (bad < v.n)
+    {
+        blowUp(bad, "a non-finite or non-positive density, velocity or"
+            " position", true, true, dt);
+    }
+
+    deltaT0_ = deltaT_;
+    deltaT_ = dt;
+    time_ = writeNow_ ? time_ + dt : time_ + dt;
+    if (writeNow_)
+    {
+        // Exactly on the target, so that names and restarts agree.
+        const scalar target =
+            control_.writeControl == writeControlType::adjustableRunTime
+          ? std::min(control_.endTime, nextWriteTime_) : control_.endTime;
+        time_ = target;
+    }
+    ++timeIndex_;
+    ++stepsRun_;
+    particleSteps_ += v.n;
+}
+
+
+// * * * * * * * * * * * * * * * * * Blow-up  * * * * * * * * * * * * * * * //
+
+std::string sphSolver::describeParticle(const label i) const
+{
+    std::ostringstream os;
+    os << "id " << particles_.id[i] << " of body "
+       << bodies_[particles_.body[i]].name << " at "
+       << str(particles_.position[i]);
+    return os.str();
+}
+
+
+void sphSolver::blowUp(const label particle, const std::string& what,
+                       const bool undoPredictor, const bool undoCorrector,
+                       const scalar dt)
+{
+    std::ostringstream msg;
+    msg << "The run blew up at time " << str(time_, 10) << " (step "
+        << timeIndex_ + 1 << "): particle " << describeParticle(particle)
+        << " (velocity " << str(particles_.velocity[particle])
+        << ", density " << str(particles_.rho[particle]) << ") has "
+        << what << ".\n";
+
+    // Back to the state at the start of the step: v^n and rho^n were kept
+    // by the predictor; x^n = x - dt/2 (v^n + v^{n+1}) after the
+    // corrector (shifting excepted), x - dt/2 v^n after the predictor.
+    particleView v = particles_.view();
+    if (undoPredictor)
+    {
+        for (label i = 0; i < v.n; ++i)
+        {
+            if (v.kind[i] != fluidKind) continue;
+            vec3 x = v.position[i] - (0.5*dt)*v.velocity0[i];
+            if (undoCorrector)
+            {
+                x -= (0.5*dt)*v.velocity[i];
+            }
+            v.position[i] = x;
+            v.velocity[i] = v.velocity0[i];
+            v.rho[i] = v.rho0[i];
+        }
+    }
+    // Only a finite state is worth writing.
+    bool finite = true;
+    for (label i = 0; i < v.n && finite; ++i)
+    {
+        finite = isFinite(v.position[i]) && isFinite(v.velocity[i])
+              && isFinite(v.rho[i]);
+    }
+    if (finite)
+    {
+        write();
+        msg << "The last good state (time " << str(time_, 10)
+            << ") was written to " << control_.name(time_) << "/.\n";
+    }
+    msg << "Usual causes: a time step too large for the forces (lower maxCo"
+           " or maxDeltaT), a speed of sound too low for the impact"
+           " (raise c0), or particles packed too closely at the start.";
+    fatalError(msg.str());
+}
+
+
+// * * * * * * * * * * * * * * * * * * Output * * * * * * * * * * * * * * * //
+
+double sphSolver::countInteractions()
+{
+    const particleView v = particles_.view();
+    const scalar support2 = 4*model_.h*model_.h;
+    const cellGrid grid = grid_;
+    const label* cellStart = cells_.cellStart.data();
+    return parallelReduce(openmpExec{}, v.n, [=](const label i)
+    {
+        double count = 0;
+        if (v.kind[i] != fluidKind) return count;
+        const vec3 xi = v.position[i];
+        forEachCandidate(grid, cellStart, xi, [&](const label j) SPHVCPM_INLINE
+        {
+            if (j != i && magSqr(xi - v.position[j]) < support2) ++count;
+        });
+        return count;
+    }, 0.0, sumOp());
+}
+
+
+void sphSolver::write()
+{
+    const label n = particles_.size();
+    std::vector<label> counts(bodies_.size(), 0);
+    for (label i = 0; i < n; ++i) ++counts[particles_.body[i]];
+
+    std::vector<particleBody> out;
+    out.reserve(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+    {
+        out.emplace_back(bodies_[b].name, bodies_[b].type,
+                         model_.nDimensions, bodies_[b].dp);
+        out.back().resize(counts[b]);
+        out.back().addVectorField("U");
+        out.back().addScalarField("rho");
+        out.back().addScalarField("p");
+        out.back().addScalarField("mass");
+    }
+    std::vector<label> fill(bodies_.size(), 0);
+    label maxId = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const int b = particles_.body[i];
+        particleBody& body = out[b];
+        const label k = fill[b]++;
+        body.position()[k] = particles_.position[i];
+        body.id()[k] = particles_.id[i];
+        body.vectorField("U")[k] = particles_.velocity[i];
+        body.scalarField("rho")[k] = particles_.rho[i];
+        body.scalarField("p")[k] = particles_.p[i];
+        body.scalarField("mass")[k] = particles_.mass[i];
+        maxId = std::max(maxId, particles_.id[i]);
+    }
+    for (particleBody& body : out) body.setNextId(maxId + 1);
+
+    timeState state;
+    state.value = time_;
+    state.name = control_.name(time_);
+    state.index = timeIndex_;
+    state.deltaT = deltaT_;
+    state.deltaT0 = deltaT0_;
+    state.beginTime = beginTime_;
+    writeTimeDirectory(caseDir_, state, out,
+        writeFormatFromName(control_.writeFormatName),
+        control_.writePrecision);
+    log_<< "Writing time " << state.name << std::endl;
+
+    if (control_.purgeWrite > 0 && state.name != startTimeName_)
+    {
+        if (writtenTimes_.empty() || writtenTimes_.back() != state.name)
+        {
+            writtenTimes_.push_back(state.name);
+        }
+        while (label(writtenTimes_.size()) > control_.purgeWrite)
+        {
+            fs::remove_all(caseDir_/writtenTimes_.front());
+            writtenTimes_.erase(writtenTimes_.begin());
+        }
+    }
+}
+
+
+void sphSolver::executeFunctions()
+{
+    const solverSnapshot s{particles_, cells_, model_, bodies_, time_,
+                           timeIndex_, deltaT_};
+    for (auto& f : functions_)
+    {
+        f->execute(s);
+    }
+}
+
+
+bool sphSolver::writeDue() const
+{
+    switch (control_.writeControl)
+    {
+        case writeControlType::timeStep:
+            return timeIndex_ % label(control_.writeInterval) == 0;
+        case writeControlType::runTime:
+            return time_ >= nextWriteTime_*(1 - 1e-12);
+        default:
+            return writeNow_ && time_ >= nextWriteTime_*(1 - 1e-12);
+    }
+}
+
+
+void sphSolver::run()
+{
+    const scalar interval = control_.writeInterval;
+    auto nextWriteAfter = [&](scalar t)
+    {
+        // The next multiple of writeInterval (measured from zero, as
+        // OpenFOAM does) strictly after t.
+        scalar k = std::floor(t/interval + 1e-9) + 1;
+        return k*interval;
+    };
+    nextWriteTime_ = nextWriteAfter(time_);
+
+    if (time_ >= control_.endTime*(1 - 1e-12))
+    {
+        log_<< "Time " << time_ << " is at or past endTime "
+            << control_.endTime << ": nothing to do\n" << std::endl;
+        return;
+    }
+
+    const double nInteract0 = countInteractions();
+    interactionSamples_ += nInteract0;
+    ++nInteractionSamples_;
+    executeFunctions();
+
+    log_<< "Starting time loop\n" << std::endl;
+    const auto wallStart = std::chrono::steady_clock::now();
+    while (time_ < control_.endTime*(1 - 1e-12))
+    {
+        step();
+        executeFunctions();
+
+        const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
+        if (writeDue() || atEnd)
+        {
+            write();
+            while (nextWriteTime_ <= time_*(1 + 1e-12))
+            {
+                nextWriteTime_ += interval;
+            }
+        }
+        if (stepsRun_ % control_.logInterval == 0 || atEnd)
+        {
+            interactionSamples_ += countInteractions();
+            ++nInteractionSamples_;
+            log_<< "Time = " << control_.name(time_) << "\n"
+                << "Step = " << timeIndex_ << "  deltaT = "
+                << str(deltaT_, 4) << "  particles = " << particles_.size()
+                << "\n" << executionTimeLine() << "\n" << std::endl;
+        }
+    }
+
+    const double seconds = std::chrono::duration<double>(
+        std::chrono::steady_clock::now() - wallStart).count();
+    const double meanPairs = interactionSamples_/nInteractionSamples_;
+    log_<< "Run summary: " << stepsRun_ << " steps of "
+        << particles_.size() << " particles in " << str(seconds, 4)
+        << " s wall clock\n"
+        << "    " << str(particleSteps_/seconds/1e6, 4)
+        << " M particle-steps/s, "
+        << str(2*meanPairs*stepsRun_/seconds/1e9, 4)
+        << " G interactions/s (" << str(meanPairs/std::max<label>(1,
+            particles_.size()), 4) << " neighbours per particle, 2 force"
+           " passes per step), " << openmpThreads() << " threads\n";
+    for (const bodyInfo& b : bodies_)
+    {
+        if (b.nRemoved > 0)
+        {
+            log_<< "    " << b.name << ": " << b.nRemoved
+                << " particles removed for leaving the domain\n";
+        }
+    }
+    log_<< std::endl;
+}
+
+} // End namespace sphvcpm
