@@ -22,7 +22,9 @@ cellGrid makeCellGrid(const vec3& lower, const vec3& upper,
     }
     cellGrid g;
     g.origin = lower;
-    g.cellSize = support/divisor;
+    // A hair larger than support/divisor, so that a pair a rounding error
+    // inside the support is never two cells further than the reach.
+    g.cellSize = support/divisor*(1 + 1e-9);
     g.invCellSize = 1/g.cellSize;
     g.reach = divisor;
     auto count = [&](scalar length)

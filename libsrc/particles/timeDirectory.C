@@ -89,6 +89,10 @@ void writeTimeDict(const fs::path& file, const timeState& state,
     dict.set<label>("index", state.index);
     dict.set<scalar>("deltaT", state.deltaT);
     dict.set<scalar>("deltaT0", state.deltaT0);
+    for (const auto& [key, value] : state.solverValues)
+    {
+        dict.set<scalar>(key, value);
+    }
     dict.writeFile(file, location);
     particleFiles::syncPath(file);
 }
@@ -398,6 +402,14 @@ timeState readTimeState(const fs::path& caseDir, const std::string& timeName)
     state.deltaT = dict.get<scalar>("deltaT");
     state.deltaT0 = dict.getOrDefault<scalar>("deltaT0", state.deltaT);
     state.beginTime = dict.getOrDefault<scalar>("beginTime", 0);
+    for (const std::string& key : dict.keys())
+    {
+        if (key != "value" && key != "name" && key != "index"
+         && key != "deltaT" && key != "deltaT0" && key != "beginTime")
+        {
+            state.solverValues.emplace_back(key, dict.get<scalar>(key));
+        }
+    }
     const auto check = [&dict](const char* key, scalar v, bool nonNegative)
     {
         if (!std::isfinite(v) || (nonNegative && v < 0))

@@ -100,6 +100,7 @@ std::size_t particleFields::bytesPerParticle() const
 {
     std::size_t b = 4*sizeof(vec3) + 5*sizeof(scalar) + 2 + sizeof(label);
     b += sizeof(std::uint32_t) + sizeof(label);   // sort key and order
+    b += sizeof(scalar);                          // viscous step term
     if (!tau.empty()) b += sizeof(symmTensor);
     if (!shiftGradient.empty()) b += sizeof(vec3) + sizeof(scalar);
     return b;

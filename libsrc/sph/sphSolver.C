@@ -148,6 +148,7 @@ void sphSolver::readStartTime()
     const timeState state = readTimeState(caseDir_, startTimeName_);
     // Index 0: the initial state (generateParticles), not a solver write.
     freshStart_ = state.index == 0;
+    restartC0_ = state.solverValue("c0", 0);
     time_ = state.value;
     timeIndex_ = state.index;
     beginTime_ = time_;
@@ -264,7 +265,13 @@ void sphSolver::setSoundSpeed()
 
     const std::string file = (caseDir_/"constant/fluidProperties").string();
     const scalar uGravity = std::sqrt(gMag*fluidHeight_);
-    if (model_.coefSound > 0)
+    if (model_.coefSound > 0 && restartC0_ > 0)
+    {
+        // The c0 of the run's start: a restart must not re-derive it from
+        // the scene as it is now.
+        model_.c0 = restartC0_;
+    }
+    else if (model_.coefSound > 0)
     {
         model_.c0 = model_.coefSound*std::max(uGravity, std::sqrt(u2));
         if (!(model_.c0 > 0))
@@ -467,14 +474,17 @@ void sphSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
     c.tensileInvWdp = model_.kernel == kernelType::cubicSpline
       ? 1/cubicSplineKernel(model_.h, model_.nDimensions).W(model_.dp) : 0;
 
-    stepTerms t = stepTerms::identity(v.n);
+    viscTerm_.resize(v.n);
     withKernel(model_, [&](auto kernel)
     {
         using K = decltype(kernel);
-        t = parallelReduce(openmpExec{}, v.n,
-            fluidRatesOp<K>{kernel, grid_, cells_.cellStart.data(), v, c},
-            stepTerms::identity(v.n), stepTermsOp{});
+        parallelFor(openmpExec{}, v.n, fluidRatesLoopOp<K>{
+            {kernel, grid_, cells_.cellStart.data(), v, c},
+            viscTerm_.data()});
     });
+    const stepTerms t = parallelReduce(openmpExec{}, v.n,
+        stepTermsOfRatesOp{v, viscTerm_.data(), model_.g},
+        stepTerms::identity(v.n), stepTermsOp{});
     maxAcc2 = t.maxAcc2;
     maxVisc = t.maxVisc;
     maxVel2 = t.maxVel2;
@@ -644,7 +654,12 @@ void sphSolver::blowUp(const label particle, const std::string& what,
         finite = isFinite(v.position[i]) && isFinite(v.velocity[i])
               && isFinite(v.rho[i]);
     }
-    if (finite)
+    if (finite && stepsRun_ == 0 && !undoPredictor)
+    {
+        msg << "The last good state is the start time, "
+            << startTimeName_ << "/.\n";
+    }
+    else if (finite)
     {
         write();
         msg << "The last good state (time " << str(time_, 10)
@@ -721,6 +736,7 @@ void sphSolver::write()
     state.deltaT = deltaT_;
     state.deltaT0 = deltaT0_;
     state.beginTime = beginTime_;
+    state.solverValues = {{"c0", model_.c0}};
     writeTimeDirectory(caseDir_, state, out,
         writeFormatFromName(control_.writeFormatName),
         control_.writePrecision);

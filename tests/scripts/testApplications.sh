@@ -4,7 +4,7 @@
 # RunFunctions that tutorials use.
 . "$(dirname "$0")/testLib.sh"
 
-apps="generateParticles particlesToVTK"
+apps="generateParticles particlesToVTK sphVcpmFsi"
 case2D="$SPHVCPM_DIR/tutorials/sphVcpmFsi/hydrostaticTank2D"
 
 for app in $apps; do

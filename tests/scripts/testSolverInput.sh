@@ -1,0 +1,95 @@
+#!/bin/bash
+# sphVcpmFsi on bad input and bad runs: each a clear FATAL ERROR naming the
+# file, line or keyword (or a warning), exit 1 and never a crash or a hang;
+# particles leaving the domain are removed and counted while the run goes
+# on; a blow-up stops with a diagnosis and writes the last good state.
+. "$(dirname "$0")/testLib.sh"
+
+source="$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D"
+fresh()
+{
+    rm -rf "$scratch/c"
+    cp -r "$source" "$scratch/c"
+    sed -i 's/^endTime .*/endTime 0.01;/' "$scratch/c/system/controlDict"
+    (cd "$scratch/c" && generateParticles > log.generateParticles 2>&1)
+}
+# expectFatal <what> <pattern>...: the solver exits 1 with each pattern
+expectFatal()
+{
+    local what="$1"; shift
+    (cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+    check "$what: exit status 1" [ $? -eq 1 ]
+    local p
+    for p in "$@"; do expectIn "$what: says /$p/" "$scratch/c/log.solver" "$p"; done
+}
+
+fresh; rm "$scratch/c/system/sphSchemes"
+expectFatal "missing sphSchemes" "FATAL IO ERROR" "system/sphSchemes"
+
+fresh; sed -i 's/^kernel /kernal /' "$scratch/c/system/sphSchemes"
+line=$(grep -n '^kernal' "$scratch/c/system/sphSchemes" | cut -d: -f1)
+expectFatal "misspelled kernel" "kernal" "sphSchemes.* at line $line" "'kernel'"
+
+fresh; sed -i 's/^kernel .*/kernel quintic;/' "$scratch/c/system/sphSchemes"
+expectFatal "unknown kernel" "quintic" "wendlandC2" "cubicSpline"
+
+fresh; sed -i 's/^rho0 .*/rho0 -1000;/' "$scratch/c/constant/fluidProperties"
+expectFatal "negative rho0" "rho0" "fluidProperties"
+
+fresh; sed -i 's/^coefSound .*/coefSound 20; c0 30;/' "$scratch/c/constant/fluidProperties"
+expectFatal "both c0 and coefSound" "exactly one of c0" "fluidProperties"
+
+fresh; sed -i 's/^coefSound .*/c0 5;/' "$scratch/c/constant/fluidProperties"
+expectFatal "a speed of sound far too low" "far too low" "at least 10 times" "m/s"
+
+fresh; sed -i 's/^maxCo .*/maxCo 3;/' "$scratch/c/system/controlDict"
+expectFatal "maxCo out of range" "maxCo" "controlDict"
+
+fresh; sed -i 's/^endTime .*/endTime -1;/' "$scratch/c/system/controlDict"
+expectFatal "negative endTime" "endTime must be > 0"
+
+fresh; rm -rf "$scratch/c/0"
+expectFatal "no time directory" "generateParticles"
+
+fresh; sed -i 's/^dp .*/dp 0.02;/' "$scratch/c/0/box/bodyProperties"
+expectFatal "bodies of different dp" "must share one spacing"
+
+fresh; sed -i 's/^coefSound .*/coefSound 7;/' "$scratch/c/constant/fluidProperties"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+check "a low speed of sound only warns: the run ends" grep -q '^End' "$scratch/c/log.solver"
+expectIn "a low speed of sound: warning" "$scratch/c/log.solver" "Warning"
+
+# A time step below minDeltaT: diagnosis, last good state written.
+fresh; sed -i 's/^adjustTimeStep .*/adjustTimeStep yes; minDeltaT 1e-3;/' "$scratch/c/system/controlDict"
+expectFatal "a step below minDeltaT" "below minDeltaT" "particle id [0-9]+ of body water at \(" \
+    "last good state is the start time, 0/"
+
+# A fixed step far too large: the run blows up, says where, and writes the
+# last good state (the time directory named in the message exists).
+fresh; sed -i 's/^adjustTimeStep .*/adjustTimeStep no;/; s/^deltaT .*/deltaT 0.004;/' \
+    "$scratch/c/system/controlDict"
+sed -i 's/^endTime .*/endTime 0.4;/' "$scratch/c/system/controlDict"
+expectFatal "a blow-up" "blew up at time" "particle id [0-9]+ of body water" \
+    "last good state"
+t=$(sed -n 's/.*was written to \([^/]*\)\/.*/\1/p' "$scratch/c/log.solver" | head -1)
+check "the last good state $t/ exists and is complete" \
+    [ -n "$t" -a -f "$scratch/c/$t/water/position" -a -f "$scratch/c/$t/uniform/time" ]
+
+# Particles leaving the domain: water thrown up out of the open tank of
+# hydrostaticTank2D past the domain's top is removed and counted, and the
+# run goes on.
+rm -rf "$scratch/c"
+cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/hydrostaticTank2D" "$scratch/c"
+(cd "$scratch/c" && ./Allclean > /dev/null 2>&1)
+sed -i 's/^dp .*/dp 0.02;/; s/^        type        fluid;/        type        fluid;\n        U           (0 4 0);/' \
+    "$scratch/c/system/generateParticlesDict"
+sed -i 's/^endTime .*/endTime 0.3;/; /^functions/,$d' "$scratch/c/system/controlDict"
+echo 'domain { min (-0.1 -0.1 0); max (1.1 1.0 0); }' >> "$scratch/c/system/sphSchemes"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+check "fluid crossing the domain bounds: the run ends" grep -q '^End' "$scratch/c/log.solver"
+expectIn "fluid crossing the domain bounds: removed and counted" "$scratch/c/log.solver" \
+    "^Removed [0-9]+ particles? of water that left the domain"
+expectIn "the run summary counts the removed particles" "$scratch/c/log.solver" \
+    "water: [0-9]+ particles removed for leaving the domain"
+
+finish

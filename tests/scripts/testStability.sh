@@ -1,0 +1,94 @@
+#!/bin/bash
+# Stability suite (coarse, for CI): a violent dam break in a closed box run
+# to ten times its impact time, a long hydrostatic run, and dam breaks with
+# a low and a high speed of sound. Each must end normally with no NaN, no
+# fluid particle through a wall or removed, the fluid mass conserved
+# exactly and the mechanical energy (kinetic + potential above the floor)
+# never above its start by more than 1 %.
+. "$(dirname "$0")/testLib.sh"
+. "$(dirname "$0")/fieldTools.sh"
+
+damBreak="$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D"
+tank="$SPHVCPM_DIR/tutorials/sphVcpmFsi/hydrostaticTank2D"
+
+# setEntry <file> <keyword> <value>: replaces a top-level entry.
+setEntry() { sed -i "s|^$2 .*|$2 $3;|" "$1"; }
+
+# prepare <name> <source> <dp> <endTime> <writeInterval>
+prepare()
+{
+    local c="$scratch/$1"
+    cp -r "$2" "$c"
+    (cd "$c" && ./Allclean > /dev/null 2>&1; rm -rf 0)
+    setEntry "$c/system/generateParticlesDict" dp "$3"
+    setEntry "$c/system/controlDict" endTime "$4"
+    setEntry "$c/system/controlDict" writeInterval "$5"
+    setEntry "$c/system/controlDict" writeFormat ascii
+    setEntry "$c/system/controlDict" logInterval 5000
+}
+
+# run <name>: generateParticles and the solver, logs in the case.
+run()
+{
+    local c="$scratch/$1"
+    (cd "$c" && generateParticles > log.generateParticles 2>&1 \
+             && sphVcpmFsi > log.sphVcpmFsi 2>&1)
+    check "$1: the run ends normally" grep -q '^End' "$c/log.sphVcpmFsi"
+}
+
+# checkRun <name> <xmax> <ymax> <dp> <energyFile>: the checks of the suite.
+# A fluid particle is through a wall when its centre is past the first
+# layer of wall particles (dp/2 outside the wall face).
+checkRun()
+{
+    local name="$1" c="$scratch/$1" xmax="$2" ymax="$3" dp="$4" energy="$5"
+    check "$name: no particle removed" bash -c "! grep -q '^Removed' '$c/log.sphVcpmFsi'"
+    local bad=0 t worst
+    for t in $(cd "$c" && ls -d [0-9]* | grep -v '^0$'); do
+        worst=$(fieldValues "$c/$t/water/position" | awk -v X="$xmax" -v Y="$ymax" -v e="$dp" '
+            { if (!($1 == $1 + 0 && $2 == $2 + 0)) { print "NaN"; exit }
+              o = -e/2 - $1; if ($1 - X - e/2 > o) o = $1 - X - e/2
+              if (-e/2 - $2 > o) o = -e/2 - $2; if ($2 - Y - e/2 > o) o = $2 - Y - e/2
+              if (n++ == 0 || o > m) m = o }
+            END { if (n) printf "%.3g\n", m }')
+        awk -v w="$worst" 'BEGIN { exit !(w == w + 0 && w <= 0) }' \
+            || { bad=$((bad + 1)); echo "    time $t: a fluid particle $worst m past the first wall layer"; }
+        fieldValues "$c/$t/water/rho" | awk '
+            { if (!($1 == $1 + 0) || $1 <= 0) bad++ } END { exit bad > 0 }' || bad=$((bad + 1))
+    done
+    check "$name: every written state is finite, with no fluid through a wall" [ $bad -eq 0 ]
+    check "$name: fluid mass conserved exactly" \
+        [ "$(awk '!/^#/ { print $2 }' "$c/$energy" | sort -u | wc -l)" -eq 1 ]
+    local rise
+    rise=$(awk '!/^#/ { e = $3 + $4; if (n++ == 0) e0 = e; if (e > m) m = e }
+                END { printf "%.4g\n", (m - e0)/e0 }' "$c/$energy")
+    check "$name: energy bounded (largest rise $rise of the start)" \
+        awk -v r="$rise" 'BEGIN { exit !(r == r + 0 && r <= 0.01) }'
+}
+
+# 1. Violent dam break: the front hits the far wall at about 0.32 s.
+prepare violentDamBreak "$damBreak" 0.02 3.2 0.4
+run violentDamBreak
+checkRun violentDamBreak 0.8 0.5 0.02 postProcessing/energy/0/energy.dat
+
+# 2. Long hydrostatic run (coarse): the surface stays put.
+prepare longHydrostatic "$tank" 0.02 3 1
+run longHydrostatic
+checkRun longHydrostatic 1 0.8 0.02 postProcessing/energy/0/energy.dat
+drift=$(awk '!/^#/ { if (n++ == 0) h0 = $2; h = $2 } END { printf "%.4g\n", (h - h0)/0.02 }' \
+    "$scratch/longHydrostatic/postProcessing/surface/0/height.dat")
+check "longHydrostatic: surface drift $drift dp over $(awk '/^Step = / { s = $3 } END { print s }' \
+    "$scratch/longHydrostatic/log.sphVcpmFsi") steps (limit 0.5 dp)" \
+    awk -v d="$drift" 'BEGIN { exit !(d == d + 0 && d < 0.5 && d > -0.5) }'
+
+# 3. Low and high speeds of sound.
+for cs in 10 80; do
+    prepare "soundSpeed$cs" "$damBreak" 0.02 0.6 0.3
+    setEntry "$scratch/soundSpeed$cs/constant/fluidProperties" coefSound $cs
+    run "soundSpeed$cs"
+    checkRun "soundSpeed$cs" 0.8 0.5 0.02 postProcessing/energy/0/energy.dat
+done
+expectIn "the low speed of sound is warned about" "$scratch/soundSpeed10/log.sphVcpmFsi" \
+    'speed of sound c0 = .* is below'
+
+finish

@@ -1,0 +1,667 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The cell-linked list against brute force, in 2D and 3D: uniform and
+// clustered clouds, particles exactly on cell faces (dyadic and decimal
+// cell sizes), particles outside the grid and non-finite positions, cell
+// divisors 1 and 2, serial and OpenMP builds (which must agree exactly),
+// and the errors of makeCellGrid.
+
+#include "cellList.H"
+#include "error.H"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace sphvcpm;
+
+namespace
+{
+
+const scalar NaN = std::numeric_limits<scalar>::quiet_NaN();
+const scalar Inf = std::numeric_limits<scalar>::infinity();
+
+struct cloud
+{
+    std::string name;
+    vec3 lower, upper;
+    scalar support;
+    int nDim;
+    std::vector<vec3> x;
+};
+
+scalar uniform(std::mt19937_64& gen, const scalar a, const scalar b)
+{
+    return std::uniform_real_distribution<scalar>(a, b)(gen);
+}
+
+// n points uniformly in [lower, upper] (z = 0 in 2D).
+void addUniform(cloud& c, std::mt19937_64& gen, const label n)
+{
+    for (label k = 0; k < n; ++k)
+    {
+        c.x.push_back({uniform(gen, c.lower.x, c.upper.x),
+                       uniform(gen, c.lower.y, c.upper.y),
+                       c.nDim == 3 ? uniform(gen, c.lower.z, c.upper.z) : 0});
+    }
+}
+
+// Gaussian clusters of width sigma (some points fall outside the domain),
+// and a pile of particles at one identical position.
+void addClusters(cloud& c, std::mt19937_64& gen, const int nClusters,
+                 const label perCluster, const scalar sigma)
+{
+    std::normal_distribution<scalar> normal(0, sigma);
+    for (int k = 0; k < nClusters; ++k)
+    {
+        const vec3 centre{uniform(gen, c.lower.x, c.upper.x),
+                          uniform(gen, c.lower.y, c.upper.y),
+                          c.nDim == 3 ? uniform(gen, c.lower.z, c.upper.z) : 0};
+        for (label m = 0; m < perCluster; ++m)
+        {
+            c.x.push_back({centre.x + normal(gen), centre.y + normal(gen),
+                           c.nDim == 3 ? centre.z + normal(gen) : 0});
+        }
+    }
+    const vec3 pile{uniform(gen, c.lower.x, c.upper.x),
+                    uniform(gen, c.lower.y, c.upper.y),
+                    c.nDim == 3 ? uniform(gen, c.lower.z, c.upper.z) : 0};
+    for (int m = 0; m < 25; ++m)
+    {
+        c.x.push_back(pile);
+    }
+}
+
+// Points on the faces of the cells of both divisors: a lattice of spacing
+// support/perSupport (2 or 4) from the lower corner (many pairs exactly
+// support apart), the upper corner, and random points with one coordinate
+// on a face.
+void addFacePoints(cloud& c, std::mt19937_64& gen, const int perSupport,
+                   const label nRandom)
+{
+    const scalar s = c.support/perSupport;
+    const int nx = int(std::floor((c.upper.x - c.lower.x)/s + 1e-9)) + 1;
+    const int ny = int(std::floor((c.upper.y - c.lower.y)/s + 1e-9)) + 1;
+    const int nz = c.nDim == 3
+        ? int(std::floor((c.upper.z - c.lower.z)/s + 1e-9)) + 1 : 1;
+    for (int k = 0; k < nz; ++k)
+    {
+        for (int j = 0; j < ny; ++j)
+        {
+            for (int i = 0; i < nx; ++i)
+            {
+                c.x.push_back({c.lower.x + i*s, c.lower.y + j*s,
+                               c.nDim == 3 ? c.lower.z + k*s : 0});
+            }
+        }
+    }
+    c.x.push_back({c.upper.x, c.upper.y, c.nDim == 3 ? c.upper.z : 0});
+    std::uniform_int_distribution<int> axis(0, c.nDim - 1);
+    for (label m = 0; m < nRandom; ++m)
+    {
+        vec3 p{uniform(gen, c.lower.x, c.upper.x),
+               uniform(gen, c.lower.y, c.upper.y),
+               c.nDim == 3 ? uniform(gen, c.lower.z, c.upper.z) : 0};
+        const int a = axis(gen);
+        const scalar half = c.support/2;   // a face for divisors 1 and 2
+        const int nFaces = int((c.upper[a] - c.lower[a])/half);
+        p[a] = c.lower[a]
+             + std::uniform_int_distribution<int>(0, nFaces)(gen)*half;
+        c.x.push_back(p);
+    }
+}
+
+// Particles outside every grid the cloud gives, and non-finite ones.
+void addOutside(cloud& c)
+{
+    const scalar s = c.support;
+    const vec3 mid = 0.5*(c.lower + c.upper);
+    const scalar zMid = c.nDim == 3 ? mid.z : 0;
+    c.x.push_back({c.lower.x - 0.3*s, mid.y, zMid});
+    c.x.push_back({mid.x, c.lower.y - 1e-3*s, zMid});
+    c.x.push_back({c.upper.x + 1.1*s, mid.y, zMid});   // past the last cell
+    c.x.push_back({mid.x, c.upper.y + 5*s, zMid});
+    c.x.push_back({-1e30, 1e30, zMid});
+    if (c.nDim == 3)
+    {
+        c.x.push_back({mid.x, mid.y, c.lower.z - 0.5*s});
+        c.x.push_back({mid.x, mid.y, c.upper.z + 1.5*s});
+    }
+    else
+    {
+        c.x.push_back({mid.x, mid.y, 0.6*s});   // off the one 2D layer
+    }
+    c.x.push_back({NaN, NaN, NaN});
+    c.x.push_back({mid.x, NaN, zMid});
+    c.x.push_back({Inf, mid.y, zMid});
+}
+
+// Where a point lies with respect to the grid: clearly inside, clearly
+// outside (or not finite), or within rounding of the grid boundary.
+enum class where { inside, outside, boundary };
+
+where classify(const cellGrid& g, const vec3& x)
+{
+    const scalar tol = 1e-9*g.cellSize;
+    const int n[3] = {g.nx, g.ny, g.nz};
+    bool boundary = false;
+    for (int d = 0; d < 3; ++d)
+    {
+        if (!std::isfinite(x[d]))
+        {
+            return where::outside;
+        }
+        const scalar lo = g.origin[d];
+        const scalar hi = g.origin[d] + n[d]*g.cellSize;
+        if (x[d] < lo - tol || x[d] > hi + tol)
+        {
+            return where::outside;
+        }
+        if (x[d] < lo + tol || x[d] > hi - tol)
+        {
+            boundary = true;
+        }
+    }
+    return boundary ? where::boundary : where::inside;
+}
+
+// Every check of one list built from positions x0.
+void checkList(const cellList& list, const std::vector<vec3>& x0,
+               const scalar support)
+{
+    const cellGrid& g = list.grid;
+    const label n = label(x0.size());
+    const label nCells = g.nCells();
+    const scalar support2 = support*support;
+
+    // order is a permutation, stable within each cell.
+    ASSERT_EQ(label(list.order.size()), n);
+    ASSERT_EQ(label(list.keys.size()), n);
+    {
+        std::vector<label> sorted(list.order);
+        std::sort(sorted.begin(), sorted.end());
+        std::vector<label> iota(n);
+        std::iota(iota.begin(), iota.end(), label(0));
+        ASSERT_EQ(sorted, iota) << "order is not a permutation";
+    }
+    std::vector<vec3> x(n);
+    for (label k = 0; k < n; ++k)
+    {
+        x[k] = x0[list.order[k]];
+    }
+
+    // Keys: sorted, those of the reordered positions, order stable.
+    EXPECT_TRUE(std::is_sorted(list.keys.begin(), list.keys.end()));
+    for (label k = 0; k < n; ++k)
+    {
+        ASSERT_EQ(label(list.keys[k]), g.cellOf(x[k])) << "k = " << k;
+        if (k > 0 && list.keys[k] == list.keys[k - 1])
+        {
+            ASSERT_LT(list.order[k - 1], list.order[k]) << "unstable sort";
+        }
+    }
+
+    // cellStart: monotone, ranges of the cells, total nInside.
+    ASSERT_EQ(label(list.cellStart.size()), nCells + 1);
+    EXPECT_EQ(list.cellStart[0], 0);
+    EXPECT_EQ(list.cellStart[nCells], list.nInside);
+    EXPECT_GE(list.nInside, 0);
+    EXPECT_LE(list.nInside, n);
+    for (label c = 0; c < nCells; ++c)
+    {
+        ASSERT_LE(list.cellStart[c], list.cellStart[c + 1]) << "c = " << c;
+        for (label k = list.cellStart[c]; k < list.cellStart[c + 1]; ++k)
+        {
+            ASSERT_EQ(label(list.keys[k]), c);
+        }
+    }
+
+    // Each particle lies geometrically in its cell; the outside ones last.
+    const scalar tol = 1e-9*g.cellSize;
+    for (label k = 0; k < n; ++k)
+    {
+        const where w = classify(g, x[k]);
+        if (k < list.nInside)
+        {
+            ASSERT_NE(w, where::outside)
+                << "particle " << list.order[k] << " at (" << x[k].x << ' '
+                << x[k].y << ' ' << x[k].z << ") is outside the grid but"
+                << " sorted before nInside";
+            const label c = list.keys[k];
+            const int idx[3] =
+                {int(c % g.nx), int((c/g.nx) % g.ny), int(c/(label(g.nx)*g.ny))};
+            for (int d = 0; d < 3; ++d)
+            {
+                const scalar lo = g.origin[d] + idx[d]*g.cellSize;
+                const scalar hi = lo + g.cellSize;
+                ASSERT_GE(x[k][d], lo - tol) << "k " << k << " dir " << d;
+                ASSERT_LE(x[k][d], hi + tol) << "k " << k << " dir " << d;
+            }
+        }
+        else
+        {
+            ASSERT_NE(w, where::inside)
+                << "particle " << list.order[k] << " at (" << x[k].x << ' '
+                << x[k].y << ' ' << x[k].z << ") is inside the grid but"
+                << " sorted after nInside";
+            ASSERT_EQ(label(list.keys[k]), nCells);
+        }
+    }
+
+    // Neighbours within the support: stencil walk == brute force, and no
+    // candidate is visited twice.
+    std::vector<int> visits(n, 0);
+    std::vector<label> found, brute;
+    label nPairs = 0;
+    for (label i = 0; i < list.nInside; ++i)
+    {
+        found.clear();
+        brute.clear();
+        bool outOfRange = false;
+        forEachCandidate(g, list.cellStart.data(), x[i], [&](const label j)
+        {
+            if (j < 0 || j >= list.nInside)
+            {
+                outOfRange = true;
+                return;
+            }
+            ++visits[j];
+            if (magSqr(x[i] - x[j]) < support2)
+            {
+                found.push_back(j);
+            }
+        });
+        ASSERT_FALSE(outOfRange) << "candidate index outside [0, nInside)";
+        for (label j = 0; j < list.nInside; ++j)
+        {
+            if (visits[j] > 1)
+            {
+                ADD_FAILURE() << "candidate " << j << " visited " << visits[j]
+                    << " times from particle " << i;
+            }
+            visits[j] = 0;
+            if (magSqr(x[i] - x[j]) < support2)
+            {
+                brute.push_back(j);
+            }
+        }
+        std::sort(found.begin(), found.end());
+        if (found != brute)
+        {
+            std::vector<label> missed;
+            std::set_difference(brute.begin(), brute.end(), found.begin(),
+                                found.end(), std::back_inserter(missed));
+            std::string msg;
+            for (const label j : missed)
+            {
+                msg += " " + std::to_string(j) + " (r/support - 1 = "
+                     + std::to_string(mag(x[i] - x[j])/support - 1)
+                     + ", keys " + std::to_string(list.keys[i]) + " "
+                     + std::to_string(list.keys[j]) + ")";
+            }
+            ADD_FAILURE() << "particle " << i << " at (" << x[i].x << ' '
+                << x[i].y << ' ' << x[i].z << "): stencil finds "
+                << found.size() << " neighbours, brute force "
+                << brute.size() << "; missed:" << msg;
+            return;
+        }
+        nPairs += label(brute.size());
+    }
+    // The clouds are dense enough that the comparison means something.
+    if (list.nInside > 100)
+    {
+        EXPECT_GT(nPairs, 4*list.nInside);
+    }
+}
+
+// Builds the lists of one cloud for divisors 1 and 2 with both host
+// backends, checks each and compares them.
+void checkCloud(const cloud& c)
+{
+    for (const int divisor : {1, 2})
+    {
+        SCOPED_TRACE(c.name + ", " + std::to_string(c.nDim) + "D, divisor "
+                     + std::to_string(divisor));
+        const cellGrid g =
+            makeCellGrid(c.lower, c.upper, c.support, divisor, c.nDim);
+        EXPECT_EQ(g.reach, divisor);
+        // A relative 1e-9 larger than support/divisor (rounding margin).
+        EXPECT_NEAR(g.cellSize/(c.support/divisor), 1 + 1e-9, 1e-12);
+        // The grid covers the bounds, upper faces included (the count uses
+        // the same arithmetic as cellOf, so upper itself is inside even
+        // when the last cell ends on it).
+        EXPECT_LT(g.cellOf(c.lower), g.nCells());
+        EXPECT_LT(g.cellOf(c.upper), g.nCells());
+        EXPECT_GE(g.origin.x + g.nx*g.cellSize, c.upper.x);
+        EXPECT_GE(g.origin.y + g.ny*g.cellSize, c.upper.y);
+        if (c.nDim == 3)
+        {
+            EXPECT_GE(g.origin.z + g.nz*g.cellSize, c.upper.z);
+        }
+        else
+        {
+            EXPECT_EQ(g.nz, 1);
+            EXPECT_DOUBLE_EQ(g.origin.z, -0.5*g.cellSize);
+        }
+
+        // The expected number inside, where no point is ambiguous.
+        label nIn = 0;
+        bool ambiguous = false;
+        for (const vec3& p : c.x)
+        {
+            const where w = classify(g, p);
+            nIn += w == where::inside;
+            ambiguous = ambiguous || w == where::boundary;
+        }
+
+        const label n = label(c.x.size());
+        cellList serialList, openmpList;
+        buildCellList(serialExec{}, g, c.x.data(), n, serialList);
+        buildCellList(openmpExec{}, g, c.x.data(), n, openmpList);
+        if (!ambiguous)
+        {
+            EXPECT_EQ(serialList.nInside, nIn);
+        }
+        EXPECT_LT(serialList.nInside, n);   // every cloud has outsiders
+
+        {
+            SCOPED_TRACE("serialExec");
+            checkList(serialList, c.x, c.support);
+        }
+        {
+            SCOPED_TRACE("openmpExec");
+            checkList(openmpList, c.x, c.support);
+        }
+        EXPECT_EQ(serialList.nInside, openmpList.nInside);
+        EXPECT_TRUE(serialList.keys == openmpList.keys);
+        EXPECT_TRUE(serialList.order == openmpList.order);
+        EXPECT_TRUE(serialList.cellStart == openmpList.cellStart);
+    }
+}
+
+cloud makeCloud(const std::string& name, const int nDim, const vec3& lower,
+                const vec3& upper, const scalar support)
+{
+    cloud c;
+    c.name = name;
+    c.nDim = nDim;
+    c.lower = nDim == 3 ? lower : vec3{lower.x, lower.y, 0};
+    c.upper = nDim == 3 ? upper : vec3{upper.x, upper.y, 0};
+    c.support = support;
+    return c;
+}
+
+// A decimal (non-dyadic) domain and support, as in a case file.
+const vec3 decLower{-0.3, -0.2, -0.1};
+const vec3 decUpper{0.7, 0.5, 0.4};
+const scalar decSupport = 0.07;
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * Tests  * * * * * * * * * * * * * * * * //
+
+TEST(cellList, uniformClouds)
+{
+    for (const int nDim : {2, 3})
+    {
+        std::mt19937_64 gen(11 + nDim);
+        cloud c = makeCloud("uniform", nDim, decLower, decUpper, decSupport);
+        addUniform(c, gen, nDim == 3 ? 3000 : 2500);
+        addOutside(c);
+        std::shuffle(c.x.begin(), c.x.end(), gen);
+        checkCloud(c);
+    }
+}
+
+TEST(cellList, clusteredClouds)
+{
+    for (const int nDim : {2, 3})
+    {
+        std::mt19937_64 gen(23 + nDim);
+        cloud c = makeCloud("clustered", nDim, decLower, decUpper, decSupport);
+        addClusters(c, gen, 4, 500, 0.4*decSupport);
+        addUniform(c, gen, 300);
+        addOutside(c);
+        std::shuffle(c.x.begin(), c.x.end(), gen);
+        checkCloud(c);
+    }
+}
+
+// Dyadic sizes: the faces and the pair distances are exact, so many pairs
+// are exactly one support apart (not neighbours: r < support is strict).
+TEST(cellList, pointsOnFacesDyadic)
+{
+    for (const int nDim : {2, 3})
+    {
+        std::mt19937_64 gen(37 + nDim);
+        cloud c = makeCloud("faces (dyadic)", nDim, {0, 0, 0},
+                            {1.0, 0.75, 0.5}, 0.25);
+        addFacePoints(c, gen, 4, 500);
+        addOutside(c);
+        std::shuffle(c.x.begin(), c.x.end(), gen);
+        checkCloud(c);
+    }
+}
+
+// Decimal sizes: the face coordinates and distances carry rounding, so a
+// pair nominally one support apart may measure a hair less than it.
+TEST(cellList, pointsOnFacesDecimal)
+{
+    for (const int nDim : {2, 3})
+    {
+        std::mt19937_64 gen(41 + nDim);
+        cloud c = makeCloud("faces (decimal)", nDim, decLower, decUpper,
+                            decSupport);
+        addFacePoints(c, gen, nDim == 3 ? 2 : 4, 500);
+        addOutside(c);
+        std::shuffle(c.x.begin(), c.x.end(), gen);
+        checkCloud(c);
+    }
+}
+
+// Large enough that the OpenMP sort and loops run on several blocks; the
+// neighbour sets are checked on a sample.
+TEST(cellList, largeCloudSerialEqualsOpenmp)
+{
+    std::mt19937_64 gen(53);
+    cloud c = makeCloud("large", 3, {0, 0, 0}, {1, 1, 1}, 0.05);
+    addUniform(c, gen, 60000);
+    addOutside(c);
+    std::shuffle(c.x.begin(), c.x.end(), gen);
+    const label n = label(c.x.size());
+    for (const int divisor : {1, 2})
+    {
+        const cellGrid g = makeCellGrid(c.lower, c.upper, c.support,
+                                        divisor, 3);
+        cellList a, b;
+        buildCellList(serialExec{}, g, c.x.data(), n, a);
+        buildCellList(openmpExec{}, g, c.x.data(), n, b);
+        EXPECT_EQ(a.nInside, 60000);
+        EXPECT_EQ(a.nInside, b.nInside);
+        EXPECT_TRUE(a.keys == b.keys);
+        EXPECT_TRUE(a.order == b.order);
+        EXPECT_TRUE(a.cellStart == b.cellStart);
+        EXPECT_TRUE(std::is_sorted(b.keys.begin(), b.keys.end()));
+
+        std::vector<vec3> x(n);
+        for (label k = 0; k < n; ++k)
+        {
+            x[k] = c.x[b.order[k]];
+        }
+        const scalar s2 = c.support*c.support;
+        std::uniform_int_distribution<label> pick(0, b.nInside - 1);
+        for (int m = 0; m < 300; ++m)
+        {
+            const label i = pick(gen);
+            std::vector<label> found, brute;
+            forEachCandidate(g, b.cellStart.data(), x[i], [&](const label j)
+            {
+                if (magSqr(x[i] - x[j]) < s2) found.push_back(j);
+            });
+            for (label j = 0; j < b.nInside; ++j)
+            {
+                if (magSqr(x[i] - x[j]) < s2) brute.push_back(j);
+            }
+            std::sort(found.begin(), found.end());
+            ASSERT_EQ(found, brute) << "particle " << i;
+        }
+    }
+}
+
+// A pair a few ulp inside the support whose cell indices, rounded
+// separately, would lie more than reach cells apart with cells of exactly
+// support/divisor (found by a search over decimal domains and supports);
+// makeCellGrid makes cells a relative 1e-9 larger to leave that margin.
+TEST(cellList, pairJustInsideSupportIsFound)
+{
+    struct pairCase
+    {
+        scalar lower, support;
+        int divisor;
+        scalar xi, xj;
+    };
+    const pairCase cases[] =
+    {
+        {-0.52048505510999099, 0.011952130235981713, 1,
+         -0.018495585198759056, -0.0065434549627773463},
+        {-0.63523121831373608, 0.018945319364465453, 2,
+         -0.08581695674423799, -0.10476227610870344},
+    };
+    for (const pairCase& pc : cases)
+    {
+        const std::vector<vec3> x{{pc.xi, 0.5, 0}, {pc.xj, 0.5, 0}};
+        ASSERT_LT(magSqr(x[0] - x[1]), pc.support*pc.support);
+        const cellGrid g = makeCellGrid({pc.lower, 0, 0},
+            {pc.lower + 1, 1, 0}, pc.support, pc.divisor, 2);
+        cellList list;
+        buildCellList(serialExec{}, g, x.data(), 2, list);
+        ASSERT_EQ(list.nInside, 2);
+        for (label i = 0; i < 2; ++i)
+        {
+            int found = 0;
+            forEachCandidate(g, list.cellStart.data(), x[list.order[i]],
+                             [&](const label j) { found += j != i; });
+            EXPECT_EQ(found, 1)
+                << "divisor " << pc.divisor << ": particle " << i
+                << " in cell " << list.keys[i] << " does not see its"
+                << " neighbour in cell " << list.keys[1 - i] << " at r/support"
+                << " - 1 = " << mag(x[0] - x[1])/pc.support - 1;
+        }
+    }
+}
+
+
+TEST(cellList, emptyAndAllOutside)
+{
+    const cellGrid g = makeCellGrid({0, 0, 0}, {1, 1, 0}, 0.1, 1, 2);
+    for (const int backend : {0, 1})
+    {
+        cellList list;
+        if (backend == 0)
+        {
+            buildCellList(serialExec{}, g, nullptr, 0, list);
+        }
+        else
+        {
+            buildCellList(openmpExec{}, g, nullptr, 0, list);
+        }
+        EXPECT_EQ(list.nInside, 0);
+        ASSERT_EQ(label(list.cellStart.size()), g.nCells() + 1);
+        for (const label s : list.cellStart)
+        {
+            EXPECT_EQ(s, 0);
+        }
+
+        const std::vector<vec3> out{{-1, 0.5, 0}, {NaN, 0, 0}, {2, 2, 0}};
+        if (backend == 0)
+        {
+            buildCellList(serialExec{}, g, out.data(), 3, list);
+        }
+        else
+        {
+            buildCellList(openmpExec{}, g, out.data(), 3, list);
+        }
+        EXPECT_EQ(list.nInside, 0);
+        for (const label s : list.cellStart)
+        {
+            EXPECT_EQ(s, 0);
+        }
+
+        // One particle in the last cell, one outside.
+        const std::vector<vec3> one{{2, 2, 0}, {1, 1, 0}};
+        if (backend == 0)
+        {
+            buildCellList(serialExec{}, g, one.data(), 2, list);
+        }
+        else
+        {
+            buildCellList(openmpExec{}, g, one.data(), 2, list);
+        }
+        EXPECT_EQ(list.nInside, 1);
+        EXPECT_EQ(list.order[0], 1);
+        EXPECT_EQ(list.order[1], 0);
+        const label last = g.cellOf({1, 1, 0});
+        EXPECT_LT(last, g.nCells());
+        for (label c = 0; c <= g.nCells(); ++c)
+        {
+            EXPECT_EQ(list.cellStart[c], c <= last ? 0 : 1) << "c = " << c;
+        }
+    }
+}
+
+TEST(cellList, cellOfOutsideAndNonFinite)
+{
+    const cellGrid g = makeCellGrid({-1, -1, -1}, {1, 1, 1}, 0.3, 2, 3);
+    EXPECT_EQ(g.cellOf({NaN, 0, 0}), g.nCells());
+    EXPECT_EQ(g.cellOf({0, NaN, 0}), g.nCells());
+    EXPECT_EQ(g.cellOf({0, 0, NaN}), g.nCells());
+    EXPECT_EQ(g.cellOf({Inf, 0, 0}), g.nCells());
+    EXPECT_EQ(g.cellOf({0, -Inf, 0}), g.nCells());
+    EXPECT_EQ(g.cellOf({-1 - 1e-12, 0, 0}), g.nCells());
+    EXPECT_EQ(g.cellOf({-1, -1, -1}), 0);
+    EXPECT_EQ(g.cellOf({1, 1, 1}), g.nCells() - 1);
+    // Large coordinates must not overflow into a valid cell index.
+    EXPECT_EQ(g.cellOf({1e300, 0, 0}), g.nCells());
+    EXPECT_EQ(g.cellOf({-1e300, 0, 0}), g.nCells());
+
+    const cellGrid g2 = makeCellGrid({-1, -1, 0}, {1, 1, 0}, 0.3, 1, 2);
+    EXPECT_EQ(g2.nz, 1);
+    EXPECT_LT(g2.cellOf({0, 0, 0}), g2.nCells());
+    EXPECT_EQ(g2.cellOf({0, 0, 0.2}), g2.nCells());   // off the 2D layer
+}
+
+TEST(cellList, makeCellGridErrors)
+{
+    const vec3 lo{0, 0, 0}, hi{1, 1, 1};
+    EXPECT_THROW(makeCellGrid(lo, hi, 0, 1, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, hi, -0.1, 1, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, hi, NaN, 1, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, hi, 0.1, 0, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, hi, 0.1, -2, 2), FatalError);
+    // Absurd cell counts: one direction, and the total.
+    EXPECT_THROW(makeCellGrid(lo, {1e7, 1, 1}, 1e-3, 1, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, hi, 1e-7, 1, 2), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, {100, 100, 100}, 0.01, 1, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, {5000, 5000, 0}, 0.1, 1, 2), FatalError);
+    // Bounds that are inverted or not finite.
+    EXPECT_THROW(makeCellGrid(hi, lo, 0.1, 1, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, {NaN, 1, 1}, 0.1, 1, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, {Inf, 1, 1}, 0.1, 1, 3), FatalError);
+    EXPECT_THROW(makeCellGrid(lo, {1, 1, NaN}, 0.1, 1, 3), FatalError);
+
+    // Valid: 2D ignores the z bounds; a domain thinner than a cell.
+    EXPECT_NO_THROW(makeCellGrid(lo, {1, 1, NaN}, 0.1, 1, 2));
+    const cellGrid thin = makeCellGrid(lo, {1, 0, 0}, 0.1, 2, 3);
+    EXPECT_EQ(thin.ny, 1);
+    EXPECT_EQ(thin.nz, 1);
+    EXPECT_EQ(thin.nx, 20);    // floor(1/(0.05 (1 + 1e-9))) + 1
+}

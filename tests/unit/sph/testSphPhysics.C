@@ -1,0 +1,965 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The SPH building blocks against analysis (theory.md §5): kernel
+// normalisation and gradients, lattice sums, the Tait equation of state,
+// the fluid rates on a block of particles (rest state, uniform pressure,
+// hydrostatic pressure and density, momentum and mass conservation,
+// laminar viscosity on linear and parabolic shear) and the symplectic
+// predictor/corrector.
+
+#include "cellList.H"
+#include "fluidInteractions.H"
+#include "parallel.H"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <ostream>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace sphvcpm;
+
+namespace sphvcpm
+{
+// For GoogleTest's messages.
+inline void PrintTo(const vec3& v, std::ostream* os)
+{
+    *os << '(' << v.x << ' ' << v.y << ' ' << v.z << ')';
+}
+}
+
+namespace
+{
+
+// * * * * * * * * * * * * * * * Kernel helpers * * * * * * * * * * * * * * //
+
+// Composite Simpson rule of f over [a, b] with n (even) intervals.
+scalar simpson(const std::function<scalar(scalar)>& f, const scalar a,
+               const scalar b, const int n)
+{
+    const scalar dx = (b - a)/n;
+    scalar sum = f(a) + f(b);
+    for (int k = 1; k < n; ++k)
+    {
+        sum += (k % 2 ? 4 : 2)*f(a + k*dx);
+    }
+    return sum*dx/3;
+}
+
+// The integral of W over the plane (2D) or space (3D), radially; split at
+// r = h where the cubic spline changes branch.
+template<class Kernel>
+scalar kernelIntegral(const Kernel& k, const int nDim)
+{
+    auto f = [&](const scalar r)
+    {
+        return nDim == 3 ? 4*M_PI*r*r*k.W(r) : 2*M_PI*r*k.W(r);
+    };
+    return simpson(f, 0, k.h, 4000) + simpson(f, k.h, 2*k.h, 4000);
+}
+
+template<class Kernel>
+void checkKernel(const std::string& name)
+{
+    for (const int nDim : {2, 3})
+    {
+        SCOPED_TRACE(name + " " + std::to_string(nDim) + "D");
+        for (const scalar h : {1.0, 0.015, 3.7e-4})
+        {
+            const Kernel k(h, nDim);
+            EXPECT_DOUBLE_EQ(k.support(), 2*h);
+
+            // Normalisation.
+            EXPECT_NEAR(kernelIntegral(k, nDim), 1.0, 1e-9) << "h = " << h;
+
+            // Compact support, positivity, monotone decrease.
+            // q = (2h)(1/h) may round to 2(1 - eps): W(2h) is then the
+            // value at that q, (eps)^3 or (eps)^4 of W(0), not exactly 0.
+            EXPECT_LT(k.W(2*h), 1e-40*k.W(0));
+            EXPECT_LT(std::fabs(k.gradFactor(2*h)), 1e-28*k.W(0)/(h*h));
+            EXPECT_EQ(k.W((2 + 1e-12)*h), 0);
+            EXPECT_EQ(k.W(2.5*h), 0);
+            EXPECT_EQ(k.gradFactor((2 + 1e-12)*h), 0);
+            EXPECT_EQ(k.gradFactor(3*h), 0);
+            scalar previous = k.W(0);
+            EXPECT_GT(previous, 0);
+            for (int m = 1; m <= 2000; ++m)
+            {
+                const scalar r = 2*h*m/2000;
+                const scalar W = k.W(r);
+                ASSERT_GE(W, 0) << "r/h = " << r/h;
+                ASSERT_LE(W, previous) << "r/h = " << r/h;
+                previous = W;
+                if (m < 2000)
+                {
+                    ASSERT_LT(k.gradFactor(r), 0) << "r/h = " << r/h;
+                }
+            }
+
+            // gradFactor = (1/r) dW/dr, against central differences.
+            for (const scalar q :
+                 {0.02, 0.1, 0.37, 0.7, 0.99, 1.01, 1.3, 1.62, 1.9, 1.98})
+            {
+                const scalar r = q*h;
+                const scalar dr = 1e-5*h;
+                const scalar dWdr = (k.W(r + dr) - k.W(r - dr))/(2*dr);
+                const scalar G = k.gradFactor(r);
+                EXPECT_NEAR(G*r, dWdr, 1e-7*std::fabs(dWdr) + 1e-9*k.W(0)/h)
+                    << "q = " << q << " h = " << h;
+            }
+        }
+    }
+}
+
+// Sums over a square (2D) or cubic (3D) lattice of spacing dp around the
+// lattice point at the origin: sum V W, -sum V G r^2 (the divergence of
+// position), sum V gradW and sum V |gradW|.
+struct latticeSums
+{
+    scalar sumW = 0, divR = 0;
+    vec3 sumGrad{0, 0, 0};
+    scalar sumAbsGrad = 0;
+};
+
+template<class Kernel>
+latticeSums latticeSum(const Kernel& k, const int nDim, const scalar dp,
+                       const vec3& offset)
+{
+    latticeSums s;
+    const scalar V = nDim == 3 ? dp*dp*dp : dp*dp;
+    const int reach = int(std::ceil(k.support()/dp)) + 1;
+    const int zReach = nDim == 3 ? reach : 0;
+    for (int a = -reach; a <= reach; ++a)
+    {
+        for (int b = -reach; b <= reach; ++b)
+        {
+            for (int c = -zReach; c <= zReach; ++c)
+            {
+                // x_ij = x_i - x_j with x_i at offset
+                const vec3 xj{a*dp + offset.x, b*dp + offset.y,
+                              c*dp + offset.z};
+                const vec3 xij = offset - xj;
+                const scalar r = mag(xij);
+                s.sumW += V*k.W(r);
+                if (r > 0)
+                {
+                    const scalar G = k.gradFactor(r);
+                    s.divR -= V*G*r*r;
+                    s.sumGrad += (V*G)*xij;
+                    s.sumAbsGrad += V*std::fabs(G)*r;
+                }
+            }
+        }
+    }
+    return s;
+}
+
+template<class Kernel>
+void checkLattice(const std::string& name)
+{
+    for (const int nDim : {2, 3})
+    {
+        SCOPED_TRACE(name + " " + std::to_string(nDim) + "D");
+        for (const scalar dp : {1.0, 0.01, 2.5e-4})
+        {
+            const Kernel k(1.5*dp, nDim);
+            const vec3 offset{0.3*dp, -0.7*dp, nDim == 3 ? 0.1*dp : 0};
+            const latticeSums s = latticeSum(k, nDim, dp, offset);
+            EXPECT_NEAR(s.sumW, 1.0, 0.02) << "dp = " << dp;
+            EXPECT_NEAR(s.divR, nDim, 0.03*nDim) << "dp = " << dp;
+            EXPECT_LT(mag(s.sumGrad), 1e-12*s.sumAbsGrad) << "dp = " << dp;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * A block of fluid * * * * * * * * * * * * * //
+
+const scalar rho0 = 1000;
+const scalar c0 = 20;
+
+// nx x ny fluid particles (2D) on a square lattice of spacing dp, built
+// in a shuffled order, sorted by cell with the cell list, with the
+// constants of the pair terms filled by hand.
+template<class Kernel>
+struct fluidBlock
+{
+    int nx, ny;
+    scalar dp, h;
+    Kernel kernel;
+    taitEquationOfState eos;
+    cellGrid grid;
+    cellList list;
+    particleFields f;
+    pairConstants c;
+    label n;
+
+    fluidBlock(const int nx_, const int ny_, const scalar dp_,
+               const scalar jitter = 0, const unsigned seed = 1)
+    :
+        nx(nx_), ny(ny_), dp(dp_), h(1.5*dp_), kernel(h, 2),
+        eos(rho0, c0, 7), n(label(nx_)*ny_)
+    {
+        std::mt19937_64 gen(seed);
+        std::uniform_real_distribution<scalar> u(-jitter, jitter);
+        std::vector<label> shuffle(n);
+        for (label k = 0; k < n; ++k) shuffle[k] = k;
+        std::shuffle(shuffle.begin(), shuffle.end(), gen);
+
+        f.resize(n, false, false);
+        for (label k = 0; k < n; ++k)
+        {
+            const label m = shuffle[k];
+            const int i = int(m % nx), j = int(m/nx);
+            f.position[k] = {(i + 0.5)*dp + u(gen)*dp,
+                             (j + 0.5)*dp + u(gen)*dp, 0};
+            f.id[k] = m;
+        }
+        for (label k = 0; k < n; ++k)
+        {
+            f.velocity[k] = {0, 0, 0};
+            f.rho[k] = rho0;
+            f.mass[k] = rho0*dp*dp;
+            f.kind[k] = fluidKind;
+            f.body[k] = 0;
+        }
+        grid = makeCellGrid({-dp, -dp, 0}, {(nx + 1)*dp, (ny + 1)*dp, 0},
+                            kernel.support(), 1, 2);
+        buildCellList(openmpExec{}, grid, f.position.data(), n, list);
+        EXPECT_EQ(list.nInside, n);
+        f.reorder(list.order, list.nInside, false, false);
+        for (label k = 0; k < n; ++k)
+        {
+            f.p[k] = 0;
+            f.acceleration[k] = {0, 0, 0};
+            f.drho[k] = 0;
+        }
+
+        c.h = h;
+        c.support2 = kernel.support()*kernel.support();
+        c.eta2 = 0.01*h*h;
+        c.c0 = c0;
+        c.rho0 = rho0;
+        c.g = {0, 0, 0};
+        c.fourNu = 0;
+        c.alphaC0H = 0;
+        c.laminar = true;
+        c.ddtCoefficient = 0.1*2*h*c0;
+        c.hydrostaticFactor = rho0/(c0*c0);
+        c.sps = false;
+        c.shifting = false;
+        c.shiftNoBoundary = false;
+        c.tensileInvWdp = 0;
+    }
+
+    // Lattice indices of particle k (from its unperturbed position).
+    int ix(const label k) const { return int(std::floor(f.position[k].x/dp)); }
+    int iy(const label k) const { return int(std::floor(f.position[k].y/dp)); }
+
+    // Whether the whole support of particle k lies inside the block.
+    bool interior(const label k) const
+    {
+        const int m = int(std::ceil(kernel.support()/dp));   // 3 layers
+        return ix(k) >= m && ix(k) < nx - m && iy(k) >= m && iy(k) < ny - m;
+    }
+
+    // Runs the rates over all particles; returns the reduced step terms.
+    stepTerms rates()
+    {
+        fluidRatesOp<Kernel> op{kernel, grid, list.cellStart.data(),
+                                f.view(), c};
+        return parallelReduce(openmpExec{}, n, op, stepTerms::identity(n),
+                              stepTermsOp{});
+    }
+
+    // Whether particle k lies in the m layers next to an edge.
+    bool truncated(const label k, const int m) const
+    {
+        return ix(k) < m || ix(k) >= nx - m || iy(k) < m || iy(k) >= ny - m;
+    }
+
+    label countInterior() const
+    {
+        label count = 0;
+        for (label k = 0; k < n; ++k) count += interior(k);
+        return count;
+    }
+};
+
+// The largest |a| of the particles that are not interior.
+template<class Block>
+scalar maxEdgeAcceleration(const Block& b)
+{
+    scalar m = 0;
+    for (label k = 0; k < b.n; ++k)
+    {
+        if (!b.interior(k)) m = std::max(m, mag(b.f.acceleration[k]));
+    }
+    return m;
+}
+
+// Sum m a and sum |m a| over the block.
+template<class Block>
+void momentumSums(const Block& b, vec3& sum, scalar& sumAbs)
+{
+    sum = {0, 0, 0};
+    sumAbs = 0;
+    for (label k = 0; k < b.n; ++k)
+    {
+        sum += b.f.mass[k]*b.f.acceleration[k];
+        sumAbs += b.f.mass[k]*mag(b.f.acceleration[k]);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * Kernels  * * * * * * * * * * * * * * * //
+
+TEST(sphKernels, wendlandC2)
+{
+    checkKernel<wendlandC2Kernel>("wendlandC2");
+
+    // The constants of theory.md §5.1 (bwenh of DualSPHysics).
+    const scalar h = 0.02;
+    EXPECT_NEAR(wendlandC2Kernel(h, 2).alpha*h*h, 0.557042, 1e-6);
+    EXPECT_NEAR(wendlandC2Kernel(h, 3).alpha*h*h*h, 0.417782, 1e-6);
+    EXPECT_NEAR(wendlandC2Kernel(h, 2).gradFactor(1e-12*h)*std::pow(h, 4),
+                -2.7852, 1e-4);
+    EXPECT_NEAR(wendlandC2Kernel(h, 3).gradFactor(1e-12*h)*std::pow(h, 5),
+                -2.08891, 1e-5);
+}
+
+TEST(sphKernels, cubicSpline)
+{
+    checkKernel<cubicSplineKernel>("cubicSpline");
+
+    for (const int nDim : {2, 3})
+    {
+        const scalar h = 0.013;
+        const cubicSplineKernel k(h, nDim);
+        // Continuity of W and of dW/dr at q = 1; W(h) = alpha/4.
+        const scalar below = (1 - 1e-13)*h, above = (1 + 1e-13)*h;
+        EXPECT_NEAR(k.W(below), k.W(above), 1e-10*k.W(0));
+        EXPECT_NEAR(k.W(h), 0.25*k.alpha, 1e-14*k.alpha);
+        EXPECT_NEAR(k.gradFactor(below), k.gradFactor(above),
+                    1e-10*std::fabs(k.gradFactor(h)));
+        EXPECT_NEAR(k.gradFactor(h), -0.75*k.alpha/(h*h),
+                    1e-12*k.alpha/(h*h));
+        // W -> 0 continuously at q = 2.
+        EXPECT_LT(k.W((2 - 1e-6)*h), 1e-17*k.W(0));
+        EXPECT_LT(k.W(2*h), 1e-40*k.W(0));
+    }
+}
+
+TEST(sphKernels, latticeSums)
+{
+    checkLattice<wendlandC2Kernel>("wendlandC2");
+    checkLattice<cubicSplineKernel>("cubicSpline");
+}
+
+
+// * * * * * * * * * * * * * * * Equation of state * * * * * * * * * * * * * //
+
+TEST(taitEquationOfState, relations)
+{
+    for (const scalar gamma : {7.0, 1.4, 1.0})
+    {
+        SCOPED_TRACE("gamma = " + std::to_string(gamma));
+        const taitEquationOfState eos(rho0, c0, gamma);
+        EXPECT_DOUBLE_EQ(eos.B, c0*c0*rho0/gamma);
+        EXPECT_EQ(eos.pressure(rho0), 0);
+        EXPECT_DOUBLE_EQ(eos.density(0), rho0);
+        EXPECT_DOUBLE_EQ(eos.soundSpeed(rho0), c0);
+
+        for (const scalar rho : {950.0, 990.5, 999.999, 1000.0, 1000.001,
+                                 1003.7, 1021.3, 1100.0})
+        {
+            const scalar p = eos.pressure(rho);
+            EXPECT_NEAR(eos.density(p), rho, 1e-12*rho) << "rho " << rho;
+            EXPECT_EQ(p > 0, rho > rho0);
+            EXPECT_NEAR(p, eos.B*(std::pow(rho/rho0, gamma) - 1),
+                        1e-13*eos.B) << "rho " << rho;
+            // c^2 = dp/drho
+            const scalar d = 1e-4;
+            const scalar dpdrho =
+                (eos.pressure(rho + d) - eos.pressure(rho - d))/(2*d);
+            const scalar cs = eos.soundSpeed(rho);
+            EXPECT_NEAR(cs*cs, dpdrho, 1e-7*cs*cs) << "rho " << rho;
+        }
+        for (const scalar p : {-1e4, -10.0, 0.5, 123.0, 5e4})
+        {
+            EXPECT_NEAR(eos.pressure(eos.density(p)), p, 1e-10*eos.B)
+                << "p " << p;
+        }
+    }
+}
+
+TEST(taitEquationOfState, gamma7FastPathEqualsPow)
+{
+    const taitEquationOfState eos(998.2, 37.5, 7);
+    ASSERT_EQ(eos.gamma, 7.0);
+    std::mt19937_64 gen(3);
+    std::uniform_real_distribution<scalar> u(0.5, 1.5);
+    for (int m = 0; m < 1000; ++m)
+    {
+        const scalar rho = eos.rho0*u(gen);
+        const scalar reference = eos.B*(std::pow(rho/eos.rho0, 7.0) - 1);
+        // A few roundings of (rho/rho0)^7 and of the subtraction of 1.
+        const scalar scale =
+            eos.B*std::max(1.0, std::pow(rho/eos.rho0, 7.0));
+        ASSERT_NEAR(eos.pressure(rho), reference, 1e-15*scale)
+            << "rho " << rho;
+    }
+    // The fast path is taken only for gamma exactly 7.
+    const taitEquationOfState near7(998.2, 37.5, 7.001);
+    EXPECT_NEAR(near7.pressure(1010.0),
+                near7.B*(std::pow(1010.0/998.2, 7.001) - 1),
+                1e-13*near7.B);
+}
+
+
+// * * * * * * * * * * * * * * * * Fluid rates * * * * * * * * * * * * * * //
+
+TEST(fluidRates, restStateGivesZeroRates)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+    b.c.fourNu = 4e-3;
+    const stepTerms t = b.rates();
+    EXPECT_EQ(t.firstBad, b.n);
+    EXPECT_EQ(t.maxAcc2, 0);
+    EXPECT_EQ(t.maxVel2, 0);
+    EXPECT_EQ(t.maxVisc, 0);
+    for (label k = 0; k < b.n; ++k)
+    {
+        // Every pair term vanishes, at the edges too.
+        EXPECT_EQ(b.f.drho[k], 0) << k;
+        EXPECT_EQ(mag(b.f.acceleration[k]), 0) << k;
+    }
+    EXPECT_EQ(b.countInterior(), 14*14);
+}
+
+TEST(fluidRates, uniformPressure)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+    const scalar P = 5000;
+    for (label k = 0; k < b.n; ++k) b.f.p[k] = P;
+    const stepTerms t = b.rates();
+    EXPECT_EQ(t.firstBad, b.n);
+
+    const scalar edge = maxEdgeAcceleration(b);
+    // Scale: P/(rho dp) (a pressure jump P over one spacing).
+    EXPECT_GT(edge, 0.1*P/(rho0*b.dp));
+    const vec3 centre{10*b.dp, 10*b.dp, 0};
+    scalar maxAcc2 = 0;
+    for (label k = 0; k < b.n; ++k)
+    {
+        const vec3 a = b.f.acceleration[k];
+        maxAcc2 = std::max(maxAcc2, magSqr(a));
+        EXPECT_EQ(b.f.drho[k], 0) << k;
+        if (b.interior(k))
+        {
+            EXPECT_LT(mag(a), 1e-12*edge) << "interior particle " << k;
+            continue;
+        }
+        // Outward, for the particles whose support is cut by an edge: with
+        // h = 1.5 dp (support 3 dp) those of the first two layers.
+        const int m = 2;
+        if (!b.truncated(k, m))
+        {
+            continue;
+        }
+        const vec3 x = b.f.position[k];
+        EXPECT_GT(dot(a, x - centre), 0) << "particle " << k;
+        if (b.ix(k) < m) { EXPECT_LT(a.x, 0) << k; }
+        if (b.ix(k) >= b.nx - m) { EXPECT_GT(a.x, 0) << k; }
+        if (b.iy(k) < m) { EXPECT_LT(a.y, 0) << k; }
+        if (b.iy(k) >= b.ny - m) { EXPECT_GT(a.y, 0) << k; }
+        // and not small: at least a tenth of the largest edge value
+        const scalar along = std::max(std::fabs(a.x), std::fabs(a.y));
+        EXPECT_GT(along, 0.1*edge) << k;
+    }
+    EXPECT_DOUBLE_EQ(t.maxAcc2, maxAcc2);
+    // The block as a whole is not pushed anywhere.
+    vec3 sum;
+    scalar sumAbs;
+    momentumSums(b, sum, sumAbs);
+    EXPECT_LT(mag(sum), 1e-13*sumAbs);
+}
+
+// p = rho0 g (H - y) with rho = rho0: the pressure gradient balances
+// gravity in the interior, to the lattice error of -sum V G y^2 = 1.
+TEST(fluidRates, hydrostaticPressureBalancesGravity)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+    const scalar g0 = 9.81, H = 0.25;
+    b.c.g = {0, -g0, 0};
+    for (label k = 0; k < b.n; ++k)
+    {
+        b.f.p[k] = rho0*g0*(H - b.f.position[k].y);
+    }
+    b.rates();
+    label count = 0;
+    for (label k = 0; k < b.n; ++k)
+    {
+        if (!b.interior(k)) continue;
+        ++count;
+        const vec3 a = b.f.acceleration[k];
+        EXPECT_NEAR(a.y, g0, 0.03*g0) << k;
+        EXPECT_NEAR(a.x, 0, 1e-10*g0) << k;
+    }
+    EXPECT_EQ(count, 14*14);
+}
+
+// Density diffusion (Fourtakas): a hydrostatic density field
+// rho = rho0 + (rho0/c0^2) rho0 g (H - y) gives no diffusion at all, while
+// the uncorrected (Molteni-Colagrossi) term does not vanish.
+TEST(fluidRates, fourtakasDiffusionVanishesForHydrostaticDensity)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+    const scalar g0 = 9.81, H = 0.25;
+    b.c.g = {0, -g0, 0};
+    for (label k = 0; k < b.n; ++k)
+    {
+        b.f.rho[k] = rho0 + b.c.hydrostaticFactor*g0*(H - b.f.position[k].y);
+        b.f.mass[k] = b.f.rho[k]*b.dp*b.dp;
+        b.f.p[k] = 0;
+    }
+    b.rates();
+    scalar maxCorrected = 0;
+    for (label k = 0; k < b.n; ++k)
+    {
+        maxCorrected = std::max(maxCorrected, std::fabs(b.f.drho[k]));
+    }
+
+    b.c.hydrostaticFactor = 0;
+    b.rates();
+    scalar maxPlain = 0, minInteriorPlain = 1e300;
+    for (label k = 0; k < b.n; ++k)
+    {
+        maxPlain = std::max(maxPlain, std::fabs(b.f.drho[k]));
+        if (b.interior(k))
+        {
+            minInteriorPlain =
+                std::min(minInteriorPlain, std::fabs(b.f.drho[k]));
+        }
+    }
+    EXPECT_GT(maxPlain, 0);
+    EXPECT_LT(maxCorrected, 1e-9*maxPlain);
+    // A linear field has zero Laplacian: the plain term is small in the
+    // interior too (it is not zero at the edges).
+    EXPECT_LT(minInteriorPlain, 1e-9*maxPlain);
+}
+
+// Sum_i V_i drho_i = 0 for density diffusion alone (pairwise
+// antisymmetric): mass is conserved, with or without the hydrostatic part.
+TEST(fluidRates, densityDiffusionConservesMass)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01, 0.2, 7);
+    std::mt19937_64 gen(8);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    for (label k = 0; k < b.n; ++k)
+    {
+        b.f.rho[k] = rho0*(1 + 0.02*u(gen));
+        b.f.mass[k] = rho0*b.dp*b.dp;
+    }
+    for (const scalar g0 : {0.0, 9.81})
+    {
+        b.c.g = {0, -g0, 0};
+        b.rates();
+        scalar sum = 0, sumAbs = 0;
+        for (label k = 0; k < b.n; ++k)
+        {
+            const scalar V = b.f.mass[k]/b.f.rho[k];
+            sum += V*b.f.drho[k];
+            sumAbs += V*std::fabs(b.f.drho[k]);
+        }
+        EXPECT_GT(sumAbs, 0);
+        EXPECT_LT(std::fabs(sum), 1e-12*sumAbs) << "g = " << g0;
+    }
+}
+
+// Pair forces are antisymmetric: sum m a = 0 to round-off for random
+// velocities, pressures and densities on a jittered block, with the
+// laminar and the artificial viscosity, and with the cubic spline and
+// Monaghan's tensile term.
+template<class Kernel>
+void checkMomentum(const bool laminar, const bool tensile,
+                   const bool uniformDensity)
+{
+    SCOPED_TRACE(std::string(laminar ? "laminar" : "artificial")
+                 + (tensile ? ", tensile term" : "")
+                 + (uniformDensity ? ", uniform rho" : ", random rho"));
+    fluidBlock<Kernel> b(20, 20, 0.01, 0.2, 5);
+    std::mt19937_64 gen(6);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    b.c.g = {0, 0, 0};
+    b.c.ddtCoefficient = 0;
+    b.c.hydrostaticFactor = 0;
+    b.c.laminar = laminar;
+    b.c.fourNu = laminar ? 4e-3 : 0;
+    b.c.alphaC0H = laminar ? 0 : 0.02*c0*b.h;
+    if (tensile)
+    {
+        b.c.tensileInvWdp = 1/b.kernel.W(b.dp);
+    }
+    for (label k = 0; k < b.n; ++k)
+    {
+        b.f.velocity[k] = {u(gen), u(gen), 0};
+        b.f.rho[k] = uniformDensity ? rho0 : rho0*(1 + 0.01*u(gen));
+        b.f.mass[k] = rho0*b.dp*b.dp*(1 + 0.1*u(gen));
+        b.f.p[k] = 2000*u(gen);
+    }
+    const stepTerms t = b.rates();
+    EXPECT_EQ(t.firstBad, b.n);
+    vec3 sum;
+    scalar sumAbs;
+    momentumSums(b, sum, sumAbs);
+    EXPECT_GT(sumAbs, 0);
+    EXPECT_LT(mag(sum), 1e-13*sumAbs);
+
+    scalar maxVel2 = 0, maxAcc2 = 0;
+    for (label k = 0; k < b.n; ++k)
+    {
+        maxVel2 = std::max(maxVel2, magSqr(b.f.velocity[k]));
+        maxAcc2 = std::max(maxAcc2, magSqr(b.f.acceleration[k]));
+    }
+    EXPECT_EQ(t.maxVel2, maxVel2);
+    EXPECT_EQ(t.maxAcc2, maxAcc2);
+    EXPECT_GT(t.maxVisc, 0);
+}
+
+TEST(fluidRates, momentumConservation)
+{
+    for (const bool uniformDensity : {true, false})
+    {
+        checkMomentum<wendlandC2Kernel>(true, false, uniformDensity);
+        checkMomentum<wendlandC2Kernel>(false, false, uniformDensity);
+        checkMomentum<cubicSplineKernel>(true, true, uniformDensity);
+        checkMomentum<cubicSplineKernel>(false, true, uniformDensity);
+    }
+}
+
+// Linear shear u_x = gamma y: the laminar term is zero in the interior.
+TEST(fluidRates, laminarLinearShear)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+    const scalar nu = 1e-3, gammaDot = 3.0;
+    b.c.fourNu = 4*nu;
+    for (label k = 0; k < b.n; ++k)
+    {
+        b.f.velocity[k] = {gammaDot*b.f.position[k].y, 0, 0};
+    }
+    const stepTerms t = b.rates();
+    EXPECT_EQ(t.firstBad, b.n);
+    const scalar edge = maxEdgeAcceleration(b);
+    EXPECT_GT(edge, 0.1*nu*gammaDot/b.dp);
+    for (label k = 0; k < b.n; ++k)
+    {
+        if (b.interior(k))
+        {
+            EXPECT_LT(mag(b.f.acceleration[k]), 1e-10*edge) << k;
+        }
+        // Incompressible: no density rate anywhere inside.
+        if (b.interior(k))
+        {
+            EXPECT_LT(std::fabs(b.f.drho[k]), 1e-10*rho0*gammaDot) << k;
+        }
+    }
+}
+
+// Parabolic profile u_x = y^2: the laminar term approximates
+// nu d2u/dy2 = 2 nu in the interior.
+TEST(fluidRates, laminarParabolicProfile)
+{
+    for (const scalar dp : {0.01, 0.005})
+    {
+        fluidBlock<wendlandC2Kernel> b(20, 20, dp);
+        const scalar nu = 1e-3;
+        b.c.fourNu = 4*nu;
+        for (label k = 0; k < b.n; ++k)
+        {
+            const scalar y = b.f.position[k].y;
+            b.f.velocity[k] = {y*y, 0, 0};
+        }
+        b.rates();
+        label count = 0;
+        for (label k = 0; k < b.n; ++k)
+        {
+            if (!b.interior(k)) continue;
+            ++count;
+            const vec3 a = b.f.acceleration[k];
+            EXPECT_NEAR(a.x, 2*nu, 0.05*2*nu) << "dp " << dp << " k " << k;
+            EXPECT_NEAR(a.y, 0, 1e-10*nu) << "dp " << dp << " k " << k;
+        }
+        EXPECT_EQ(count, 14*14);
+    }
+}
+
+// Uniform expansion v = eps x: the continuity term gives
+// drho/dt = -rho div v = -2 eps rho in the interior (to the lattice error
+// of -sum V G r^2 = 2); the artificial viscosity acts only on approaching
+// pairs: nothing at all under expansion, under compression a force at the
+// edges only (its interior sum is symmetric).
+TEST(fluidRates, uniformExpansionAndArtificialViscosity)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+    b.c.laminar = false;
+    b.c.alphaC0H = 0.02*c0*b.h;
+    const vec3 centre{10*b.dp, 10*b.dp, 0};
+    for (const scalar eps : {0.5, -0.5})
+    {
+        SCOPED_TRACE("eps = " + std::to_string(eps));
+        for (label k = 0; k < b.n; ++k)
+        {
+            b.f.velocity[k] = eps*(b.f.position[k] - centre);
+        }
+        const stepTerms t = b.rates();
+        EXPECT_EQ(t.firstBad, b.n);
+        // max h |v_ij.x_ij|/(r^2 + eta^2) = h |eps| r^2/(r^2 + eta^2) < h|eps|
+        EXPECT_LT(t.maxVisc, b.h*std::fabs(eps));
+        EXPECT_GT(t.maxVisc, 0.97*b.h*std::fabs(eps));
+
+        label count = 0;
+        for (label k = 0; k < b.n; ++k)
+        {
+            if (b.interior(k))
+            {
+                ++count;
+                EXPECT_NEAR(b.f.drho[k], -2*eps*rho0, 0.03*2*std::fabs(eps)*rho0)
+                    << k;
+            }
+        }
+        EXPECT_EQ(count, 14*14);
+
+        const scalar edge = maxEdgeAcceleration(b);
+        if (eps > 0)
+        {
+            EXPECT_EQ(edge, 0);
+        }
+        else
+        {
+            EXPECT_GT(edge, 0);
+            for (label k = 0; k < b.n; ++k)
+            {
+                if (b.interior(k))
+                {
+                    EXPECT_LT(mag(b.f.acceleration[k]), 1e-12*edge) << k;
+                }
+            }
+        }
+        if (eps > 0)
+        {
+            for (label k = 0; k < b.n; ++k)
+            {
+                EXPECT_EQ(mag(b.f.acceleration[k]), 0) << k;
+            }
+        }
+    }
+}
+
+// A non-finite pressure is reported as the smallest index of a particle
+// whose rates are not finite.
+TEST(fluidRates, firstBadReportsNonFiniteRates)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+    const label bad = b.n/2;
+    b.f.p[bad] = std::numeric_limits<scalar>::quiet_NaN();
+    const stepTerms t = b.rates();
+    label expected = b.n;
+    for (label k = 0; k < b.n; ++k)
+    {
+        if (!isFinite(b.f.acceleration[k]) || !isFinite(b.f.drho[k]))
+        {
+            expected = std::min(expected, k);
+        }
+    }
+    EXPECT_LE(expected, bad);
+    EXPECT_EQ(t.firstBad, expected);
+}
+
+
+// * * * * * * * * * * * * * * * * Integration * * * * * * * * * * * * * * //
+
+namespace
+{
+
+struct integrator
+{
+    particleFields f;
+    taitEquationOfState eos{rho0, c0, 7};
+    vec3 g;
+    scalar dt;
+
+    predictorOp predictor()
+    {
+        return predictorOp{f.view(), eos, g, dt};
+    }
+
+    correctorOp corrector()
+    {
+        return correctorOp{f.view(), eos, g, dt, false, 0, 0, 2, 0};
+    }
+
+    label correct()
+    {
+        const label n = f.size();
+        return parallelReduce(serialExec{}, n, corrector(), n, minOp());
+    }
+};
+
+} // End anonymous namespace
+
+// Constant acceleration: one step of the symplectic scheme is exact.
+// Dyadic values make every operation exact, so the comparison is ==.
+TEST(symplectic, constantAccelerationDyadic)
+{
+    integrator s;
+    s.f.resize(3, false, false);
+    s.g = {0, -8, 0.5};
+    s.dt = 1.0/64;
+    const vec3 x0{0.25, 0.5, 0.75}, v0{1.5, -0.5, 0.25}, a{2, -4, 0.5};
+    for (label k = 0; k < 3; ++k)
+    {
+        s.f.position[k] = x0;
+        s.f.velocity[k] = v0;
+        s.f.acceleration[k] = a;
+        s.f.rho[k] = 1000;
+        s.f.drho[k] = 64;
+        s.f.mass[k] = 1;
+        s.f.kind[k] = k == 1 ? wallKind : fluidKind;
+    }
+    parallelFor(serialExec{}, 3, s.predictor());
+    EXPECT_EQ(s.f.position[0], x0 + (0.5*s.dt)*v0);
+    EXPECT_EQ(s.f.velocity[0], v0 + (0.5*s.dt)*(a + s.g));
+    EXPECT_EQ(s.f.velocity0[0], v0);
+    EXPECT_EQ(s.f.rho0[0], 1000);
+    EXPECT_EQ(s.f.rho[0], 1000 + 0.5*s.dt*64);
+    EXPECT_EQ(s.f.p[0], s.eos.pressure(s.f.rho[0]));
+
+    const label result = s.correct();
+    EXPECT_EQ(result, 3);
+    const vec3 ag = a + s.g;
+    for (const label k : {0, 2})
+    {
+        EXPECT_EQ(s.f.velocity[k], v0 + s.dt*ag) << k;
+        EXPECT_EQ(s.f.position[k], x0 + s.dt*v0 + (0.5*s.dt*s.dt)*ag) << k;
+        const scalar rhoHalf = 1000 + 0.5*s.dt*64;
+        const scalar eps = -64/rhoHalf*s.dt;
+        EXPECT_DOUBLE_EQ(s.f.rho[k], 1000*(2 - eps)/(2 + eps)) << k;
+        EXPECT_EQ(s.f.p[k], s.eos.pressure(s.f.rho[k])) << k;
+    }
+    // The wall particle is left alone.
+    EXPECT_EQ(s.f.position[1], x0);
+    EXPECT_EQ(s.f.velocity[1], v0);
+    EXPECT_EQ(s.f.rho[1], 1000);
+}
+
+// The same with random values, over many steps: positions and velocities
+// follow the parabola to round-off.
+TEST(symplectic, constantAccelerationManySteps)
+{
+    std::mt19937_64 gen(9);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    integrator s;
+    s.f.resize(50, false, false);
+    s.g = {0.1, -9.81, 0.3};
+    s.dt = 1.7e-3;
+    std::vector<vec3> x0(50), v0(50), a(50);
+    for (label k = 0; k < 50; ++k)
+    {
+        x0[k] = {u(gen), u(gen), u(gen)};
+        v0[k] = {u(gen), u(gen), u(gen)};
+        a[k] = {10*u(gen), 10*u(gen), 10*u(gen)};
+        s.f.position[k] = x0[k];
+        s.f.velocity[k] = v0[k];
+        s.f.rho[k] = rho0;
+        s.f.drho[k] = 0;
+        s.f.mass[k] = 1;
+        s.f.kind[k] = fluidKind;
+    }
+    const int nSteps = 100;
+    for (int step = 0; step < nSteps; ++step)
+    {
+        for (label k = 0; k < 50; ++k) s.f.acceleration[k] = a[k];
+        parallelFor(openmpExec{}, 50, s.predictor());
+        ASSERT_EQ(s.correct(), 50);
+    }
+    const scalar T = nSteps*s.dt;
+    for (label k = 0; k < 50; ++k)
+    {
+        const vec3 ag = a[k] + s.g;
+        const vec3 v = v0[k] + T*ag;
+        const vec3 x = x0[k] + T*v0[k] + (0.5*T*T)*ag;
+        EXPECT_LT(mag(s.f.velocity[k] - v), 1e-13*(mag(v0[k]) + T*mag(ag)));
+        EXPECT_LT(mag(s.f.position[k] - x),
+                  1e-13*(mag(x0[k]) + T*mag(v0[k]) + T*T*mag(ag)));
+        EXPECT_EQ(s.f.rho[k], rho0);
+    }
+}
+
+// The corrector reports the smallest index of a particle whose density
+// turns negative (epsilon > 2) or whose state is not finite.
+TEST(symplectic, correctorReportsBadParticles)
+{
+    integrator s;
+    s.f.resize(5, false, false);
+    s.g = {0, -9.81, 0};
+    s.dt = 1e-4;
+    for (label k = 0; k < 5; ++k)
+    {
+        s.f.position[k] = {0.1*k, 0, 0};
+        s.f.velocity[k] = {0, 0, 0};
+        s.f.acceleration[k] = {0, 0, 0};
+        s.f.rho[k] = rho0;
+        s.f.drho[k] = 0;
+        s.f.mass[k] = 1;
+        s.f.kind[k] = fluidKind;
+    }
+    parallelFor(serialExec{}, 5, s.predictor());
+    EXPECT_EQ(s.correct(), 5);
+
+    // epsilon = -drho/rho dt = 3 on particles 3 and 4.
+    parallelFor(serialExec{}, 5, s.predictor());
+    for (const label k : {3, 4})
+    {
+        s.f.drho[k] = -3*s.f.rho[k]/s.dt;
+    }
+    EXPECT_EQ(s.correct(), 3);
+    EXPECT_LT(s.f.rho[3], 0);
+
+    // epsilon just below 2 keeps a (small) positive density.
+    for (label k = 0; k < 5; ++k) s.f.rho[k] = rho0, s.f.drho[k] = 0;
+    parallelFor(serialExec{}, 5, s.predictor());
+    s.f.drho[2] = -1.9*s.f.rho[2]/s.dt;
+    EXPECT_EQ(s.correct(), 5);
+    EXPECT_GT(s.f.rho[2], 0);
+
+    // A non-finite acceleration on particle 1.
+    for (label k = 0; k < 5; ++k) s.f.rho[k] = rho0, s.f.drho[k] = 0;
+    parallelFor(serialExec{}, 5, s.predictor());
+    s.f.acceleration[1].y = std::numeric_limits<scalar>::infinity();
+    s.f.acceleration[4].x = std::numeric_limits<scalar>::quiet_NaN();
+    EXPECT_EQ(s.correct(), 1);
+
+    // A wall particle is never reported.
+    for (label k = 0; k < 5; ++k)
+    {
+        s.f.rho[k] = rho0;
+        s.f.drho[k] = 0;
+        s.f.acceleration[k] = {0, 0, 0};
+        s.f.position[k] = {0.1*k, 0, 0};
+        s.f.velocity[k] = {0, 0, 0};
+    }
+    s.f.kind[0] = wallKind;
+    parallelFor(serialExec{}, 5, s.predictor());
+    s.f.drho[0] = -3*rho0/s.dt;
+    s.f.rho0[0] = rho0;
+    EXPECT_EQ(s.correct(), 5);
+}
