@@ -105,7 +105,7 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
         }
         m.h = m.hOverDp*dp;
 
-        m.cellDivisor = dict.getOrDefault<label>("cellDivisor", 1);
+        m.cellDivisor = dict.getOrDefault<label>("cellDivisor", 2);
         if (m.cellDivisor < 1 || m.cellDivisor > 4)
         {
             dict.fatalAt("cellDivisor",

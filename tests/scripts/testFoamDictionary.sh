@@ -32,6 +32,8 @@ for gen in $(find "$SPHVCPM_DIR/tutorials" -name generateParticlesDict | sort); 
     src=$(dirname "$(dirname "$gen")")
     run="$scratch/$(basename "$src")"
     cp -r "$src" "$run"
+    # The ascii files are OpenFOAM's format; binary fields are our own.
+    sed -i 's/^writeFormat .*/writeFormat ascii;/' "$run/system/controlDict"
     generateParticles -case "$run" > "$run/log" 2>&1 || { fail "generateParticles on $run"; continue; }
     for f in $(find "$run/0" -type f | sort); do
         foamRead "$f" "$scratch"
@@ -43,5 +45,20 @@ for gen in $(find "$SPHVCPM_DIR/tutorials" -name generateParticlesDict | sort); 
             bash -c "[ '$t' = fluid ] || [ '$t' = wall ] || [ '$t' = solid ]"
     done
 done
+
+# What the solver writes: a time directory (fields with p, uniform/time
+# with the solver's c0), from two steps of the 2D tank.
+run="$scratch/solverRun"
+cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/hydrostaticTank2D" "$run"
+sed -i 's/^writeFormat .*/writeFormat ascii;/; s/^endTime .*/endTime 1e-4;/; s/^writeInterval .*/writeInterval 1e-4;/; /^functions/,$d' \
+    "$run/system/controlDict"
+(cd "$run" && rm -rf [0-9]* && generateParticles > log.gen 2>&1 && sphVcpmFsi > log.solver 2>&1)
+check "sphVcpmFsi writes time 0.0001" [ -f "$run/0.0001/uniform/time" ]
+for f in $(find "$run/0.0001" -type f | sort); do
+    foamRead "$f" "$scratch"
+done
+c0=$(foamDictionary -entry c0 -value "$run/0.0001/uniform/time" 2>/dev/null)
+check "foamDictionary reads the solver's c0 in uniform/time ($c0)" \
+    awk -v c="$c0" 'BEGIN { exit !(c > 40 && c < 50) }'
 
 finish

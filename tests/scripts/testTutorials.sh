@@ -40,7 +40,9 @@ for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
     cp -r "$src" "$run"
     "$run/Allclean" > /dev/null 2>&1
     "$run/Allrun" > "$scratch/$name.out" 2>&1
-    check "$name: Allrun succeeds" [ $? -eq 0 ]
+    check "$name: Allrun succeeds (its validation checks pass)" [ $? -eq 0 ]
+    # The validation lines, for the record.
+    grep -E '\(limit .*\) (PASS|FAIL)|^Validation' "$scratch/$name.out" | sed "s/^ */    $name: /"
     for log in "$run"/log.*; do
         [ -f "$log" ] || continue
         check "$name: $(basename "$log") ends with End" grep -q "^End" "$log"
@@ -49,8 +51,10 @@ for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
     for bodyDir in "$run"/0/*/; do
         body=$(basename "$bodyDir")
         [ "$body" = uniform ] && continue
-        n=$(sed -n 's/^\([0-9][0-9]*\)$/\1/p; s/.*List<vector> *\([0-9][0-9]*\)(.*/\1/p' \
-            "$bodyDir/position" | head -n 1)
+        # The count in the field's header, ascii or binary.
+        n=$(LC_ALL=C grep -a -o -m 1 'List<vector> *[0-9][0-9]*' "$bodyDir/position" \
+            | LC_ALL=C grep -o '[0-9]*$')
+        [ -n "$n" ] || n=$(LC_ALL=C sed -n '/List<vector>/{n;p;q}' "$bodyDir/position")
         want=$(expectedCount "$name" "$body")
         if [ -n "$want" ]; then
             check "$name: $body has $want particles (found $n)" [ "$n" = "$want" ]
