@@ -1,7 +1,8 @@
 #!/bin/bash
 # Stability suite (coarse, for CI): a violent dam break in a closed box run
-# to ten times its impact time, a long hydrostatic run, and dam breaks with
-# a low and a high speed of sound. Each must end normally with no NaN, no
+# to ten times its impact time, a long hydrostatic run, dam breaks with a
+# low and a high speed of sound, and short dam breaks with each selectable
+# model switched on. Each must end normally with no NaN, no
 # fluid particle through a wall or removed, the fluid mass conserved
 # exactly and the mechanical energy (kinetic + potential above the floor)
 # never above its start by more than 1 %.
@@ -88,6 +89,34 @@ for cs in 10 80; do
     run "soundSpeed$cs"
     checkRun "soundSpeed$cs" 0.8 0.5 0.02 postProcessing/energy/0/energy.dat
 done
+# 4. The selectable models, each switched on once in the violent dam break
+#    (short): cubic spline (with its tensile correction), Molteni-Colagrossi
+#    diffusion, artificial viscosity, SPS turbulence, Fickian shifting.
+variant()
+{
+    local name="$1"; shift
+    prepare "$name" "$damBreak" 0.02 0.6 0.3
+    local c="$scratch/$name"
+    local v
+    while [ $# -gt 0 ]; do
+        v="$2"; [ "${v#\{}" = "$v" ] && v="$v;"     # a sub-dictionary takes no ';'
+        sed -i "s|^$1 .*|$1 $v|" "$c/$3"
+        grep -q "^$1 " "$c/$3" || echo "$1 $v" >> "$c/$3"
+        shift 3
+    done
+    run "$name"
+    expectIn "$name: the log names the model" "$c/log.sphVcpmFsi" "$expect"
+    checkRun "$name" 0.8 0.5 0.02 postProcessing/energy/0/energy.dat
+}
+expect="kernel cubicSpline"
+variant cubicSpline kernel cubicSpline system/sphSchemes
+expect="density diffusion molteniColagrossi"
+variant molteniColagrossi densityDiffusion "{ type molteniColagrossi; delta 0.1; }" system/sphSchemes
+expect="viscosity laminar .*turbulence SPS"
+variant sps viscosity "{ type laminar; }" system/sphSchemes turbulence SPS constant/fluidProperties
+expect="shifting fickian"
+variant shifting shifting "{ type fickian; }" system/sphSchemes
+
 expectIn "the low speed of sound is warned about" "$scratch/soundSpeed10/log.sphVcpmFsi" \
     'speed of sound c0 = .* is below'
 
