@@ -19,6 +19,7 @@ void particleFields::resize(const label n, const bool withSps,
     mass.resize(n);
     rho0.resize(n);
     drho.resize(n);
+    invRho.resize(n);
     kind.resize(n);
     body.resize(n);
     id.resize(n);
@@ -75,6 +76,7 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
     p.resize(n);
     rho0.resize(n);
     drho.resize(n);
+    invRho.resize(n);
     tau.resize(withSps ? n : 0);
     shiftGradient.resize(withShifting ? n : 0);
     divR.resize(withShifting ? n : 0);
@@ -88,7 +90,7 @@ particleView particleFields::view()
         size(),
         position.data(), velocity.data(), rho.data(), p.data(), mass.data(),
         kind.data(), body.data(), id.data(), velocity0.data(), rho0.data(),
-        acceleration.data(), drho.data(),
+        acceleration.data(), drho.data(), invRho.data(),
         tau.empty() ? nullptr : tau.data(),
         shiftGradient.empty() ? nullptr : shiftGradient.data(),
         divR.empty() ? nullptr : divR.data()
@@ -98,7 +100,7 @@ particleView particleFields::view()
 
 std::size_t particleFields::bytesPerParticle() const
 {
-    std::size_t b = 4*sizeof(vec3) + 5*sizeof(scalar) + 2 + sizeof(label);
+    std::size_t b = 4*sizeof(vec3) + 6*sizeof(scalar) + 2 + sizeof(label);
     b += sizeof(std::uint32_t) + sizeof(label);   // sort key and order
     b += sizeof(scalar);                          // viscous step term
     if (!tau.empty()) b += sizeof(symmTensor);

@@ -272,6 +272,7 @@ struct fluidBlock
     // Runs the rates over all particles; returns the reduced step terms.
     stepTerms rates()
     {
+        parallelFor(openmpExec{}, n, inverseDensityOp{f.view()});
         fluidRatesOp<Kernel> op{kernel, grid, list.cellStart.data(),
                                 f.view(), c};
         return parallelReduce(openmpExec{}, n, op, stepTerms::identity(n),
