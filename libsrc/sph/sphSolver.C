@@ -302,12 +302,6 @@ void sphSolver::setSoundSpeed()
             + str(100*uExpected*uExpected/(model_.c0*model_.c0), 2) + " %",
             file);
     }
-    const scalar h = model_.h;
-    if (model_.viscosity == viscosityType::laminar && model_.nu > 0)
-    {
-        // Nothing to check: the viscous limit enters the step.
-        (void)h;
-    }
 }
 
 
@@ -591,7 +585,7 @@ void sphSolver::step()
 
     deltaT0_ = deltaT_;
     deltaT_ = dt;
-    time_ = writeNow_ ? time_ + dt : time_ + dt;
+    time_ += dt;
     if (writeNow_)
     {
         // Exactly on the target, so that names and restarts agree.
