@@ -12,17 +12,24 @@ void particleFields::resize(const label n, const bool withSps,
 {
     position.resize(n);
     velocity.resize(n);
-    velocity0.resize(n);
-    acceleration.resize(n);
     rho.resize(n);
     p.resize(n);
     mass.resize(n);
-    rho0.resize(n);
-    drho.resize(n);
-    invRho.resize(n);
     kind.resize(n);
     body.resize(n);
     id.resize(n);
+    resizeStepFields(n, withSps, withShifting);
+}
+
+
+void particleFields::resizeStepFields(const label n, const bool withSps,
+                                      const bool withShifting)
+{
+    velocity0.resize(n);
+    acceleration.resize(n);
+    rho0.resize(n);
+    drho.resize(n);
+    invRho.resize(n);
     tau.resize(withSps ? n : 0);
     shiftGradient.resize(withShifting ? n : 0);
     divR.resize(withShifting ? n : 0);
@@ -59,6 +66,9 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
     {
         std::vector<scalar> scratch;
         gather(rho, order, n, scratch);
+        // The pressure of the fluid is used before it is next recomputed
+        // (wall extrapolation and rates at the start of a step).
+        gather(p, order, n, scratch);
         gather(mass, order, n, scratch);
     }
     {
@@ -71,15 +81,7 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
         gather(id, order, n, scratch);
     }
     // Recomputed every step: only the size changes.
-    velocity0.resize(n);
-    acceleration.resize(n);
-    p.resize(n);
-    rho0.resize(n);
-    drho.resize(n);
-    invRho.resize(n);
-    tau.resize(withSps ? n : 0);
-    shiftGradient.resize(withShifting ? n : 0);
-    divR.resize(withShifting ? n : 0);
+    resizeStepFields(n, withSps, withShifting);
 }
 
 
