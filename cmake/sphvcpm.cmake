@@ -44,13 +44,26 @@ function(sphvcpm_add_test name)
         SPHVCPM_TEST_DATA="${PROJECT_SOURCE_DIR}/tests/data")
     add_test(NAME ${name} COMMAND test_${name})
     # A test that finds no GPU (or no ParaView) reports itself skipped.
-    set_tests_properties(${name} PROPERTIES SKIP_REGULAR_EXPRESSION "\\[  SKIPPED \\]")
+    # Threads sleep rather than spin at barriers: CTest runs tests side by
+    # side, and spinning OpenMP threads of two processes sharing the cores
+    # slow both down several times over.
+    set_tests_properties(${name} PROPERTIES SKIP_REGULAR_EXPRESSION "\\[  SKIPPED \\]"
+        ENVIRONMENT "OMP_WAIT_POLICY=passive")
 endfunction()
 
-# sphvcpm_add_script_test(name script.sh): a shell test; exit 77 = skipped.
+# sphvcpm_add_script_test(name script.sh [args...] [THREADS n]): a shell test; exit
+# 77 = skipped. The applications it runs use one OpenMP thread unless THREADS
+# says more; CTest then reserves that many cores for it (PROCESSORS), so
+# that tests run side by side never ask for more threads than there are
+# cores (oversubscribed OpenMP runs several times slower).
 function(sphvcpm_add_script_test name script)
-    add_test(NAME ${name} COMMAND bash ${script}
+    cmake_parse_arguments(ARG "" "THREADS" "" ${ARGN})
+    if(NOT ARG_THREADS)
+        set(ARG_THREADS 1)
+    endif()
+    add_test(NAME ${name} COMMAND bash ${script} ${ARG_UNPARSED_ARGUMENTS}
         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
     set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77
-        ENVIRONMENT "SPHVCPM_DIR=${PROJECT_SOURCE_DIR};PATH=${SPHVCPM_APPBIN}:${PROJECT_SOURCE_DIR}/bin:$ENV{PATH}")
+        PROCESSORS ${ARG_THREADS}
+        ENVIRONMENT "SPHVCPM_DIR=${PROJECT_SOURCE_DIR};PATH=${SPHVCPM_APPBIN}:${PROJECT_SOURCE_DIR}/bin:$ENV{PATH};OMP_NUM_THREADS=${ARG_THREADS};OMP_WAIT_POLICY=passive")
 endfunction()

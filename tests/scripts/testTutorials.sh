@@ -1,6 +1,9 @@
 #!/bin/bash
-# Runs every tutorial's Allclean and Allrun in a scratch copy, checks the logs
+# Runs a tutorial's Allclean and Allrun in a scratch copy, checks the logs
 # (no FATAL, End present) and the particle counts against the geometry.
+#
+#   testTutorials.sh [tutorial name...]      (default: every tutorial)
+# CTest runs one tutorial per test, so that they share the cores.
 . "$(dirname "$0")/testLib.sh"
 
 # expectedCount <tutorial> <body>: lattice nodes of the generating dictionary
@@ -21,6 +24,9 @@ expectedCount()
 for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
     src=$(dirname "$allrun")
     name=$(basename "$src")
+    if [ $# -gt 0 ] && [[ " $* " != *" $name "* ]]; then
+        continue
+    fi
     # Cases too long for a 2-core CI (marked '# sphvcpm: long run' in their
     # Allrun) only generate their particles, unless SPHVCPM_LONG_TUTORIALS=1.
     if grep -q '^# sphvcpm: long run' "$allrun" && [ "${SPHVCPM_LONG_TUTORIALS:-0}" != 1 ]; then
@@ -70,4 +76,5 @@ for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
         diff -r -q -x 'log.*' "$src" "$run"
 done
 
+[ $((nPassed + nFailed)) -gt 0 ] || fail "no tutorial named: $*"
 finish
