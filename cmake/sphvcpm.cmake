@@ -51,13 +51,13 @@ function(sphvcpm_add_test name)
         ENVIRONMENT "OMP_WAIT_POLICY=passive")
 endfunction()
 
-# sphvcpm_add_script_test(name script.sh [args...] [THREADS n]): a shell test; exit
+# sphvcpm_add_script_test(name script.sh [args...] [THREADS n] [COST s]): a shell test; exit
 # 77 = skipped. The applications it runs use one OpenMP thread unless THREADS
 # says more; CTest then reserves that many cores for it (PROCESSORS), so
 # that tests run side by side never ask for more threads than there are
 # cores (oversubscribed OpenMP runs several times slower).
 function(sphvcpm_add_script_test name script)
-    cmake_parse_arguments(ARG "" "THREADS" "" ${ARGN})
+    cmake_parse_arguments(ARG "" "THREADS;COST" "" ${ARGN})
     if(NOT ARG_THREADS)
         set(ARG_THREADS 1)
     endif()
@@ -66,4 +66,9 @@ function(sphvcpm_add_script_test name script)
     set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77
         PROCESSORS ${ARG_THREADS}
         ENVIRONMENT "SPHVCPM_DIR=${PROJECT_SOURCE_DIR};PATH=${SPHVCPM_APPBIN}:${PROJECT_SOURCE_DIR}/bin:$ENV{PATH};OMP_NUM_THREADS=${ARG_THREADS};OMP_WAIT_POLICY=passive")
+    # COST: seconds on one core, so that a first run (no timing history)
+    # starts the longest tests first.
+    if(ARG_COST)
+        set_tests_properties(${name} PROPERTIES COST ${ARG_COST})
+    endif()
 endfunction()
