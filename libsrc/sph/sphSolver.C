@@ -5,6 +5,7 @@
 #include "argList.H"
 #include "error.H"
 #include "fluidInteractions.H"
+#include "pairRates.H"
 #include "parallel.H"
 #include "withKernel.H"
 
@@ -473,9 +474,15 @@ void sphSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
     withKernel(model_, [&](auto kernel)
     {
         using K = decltype(kernel);
-        parallelFor(openmpExec{}, v.n, fluidRatesLoopOp<K>{
-            {kernel, grid_, cells_.cellStart.data(), v, c},
-            viscTerm_.data()});
+        if (c.shifting)
+        {
+            parallelFor(openmpExec{}, v.n, fluidRatesLoopOp<K>{
+                {kernel, grid_, cells_.cellStart.data(), v, c},
+                viscTerm_.data()});
+            return;
+        }
+        // Without shifting: each pair once (half the pair work).
+        pairRates(openmpExec{}, kernel, cells_, v, c, viscTerm_.data());
     });
     const stepTerms t = parallelReduce(openmpExec{}, v.n,
         stepTermsOfRatesOp{v, viscTerm_.data(), model_.g},

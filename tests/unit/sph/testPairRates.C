@@ -1,0 +1,192 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The host's pair form of the fluid rates (each pair once, pairRates.H)
+// against the gather form (fluidRatesOp, each particle sums all its
+// neighbours) on disordered clouds of fluid over wall layers, 2D and 3D,
+// both kernels, cells of 2h and h, laminar and artificial viscosity, SPS
+// on and off: the accelerations, density rates and viscous step terms agree
+// to round-off, and the pair form gives the same bits serial and threaded.
+
+#include "cellList.H"
+#include "fluidInteractions.H"
+#include "pairRates.H"
+#include "parallel.H"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace sphvcpm;
+
+namespace
+{
+
+struct cloud
+{
+    int nDim;
+    scalar dp, h;
+    cellList cells;
+    particleFields f;
+    pairConstants c;
+    label n = 0;
+
+    // A jittered lattice of nx x ny (x nz) nodes; the lowest two layers are
+    // wall particles. Random velocity, density, pressure and SPS stress.
+    cloud(int nDim_, int nx, int ny, int nz, int divisor, bool sps,
+          bool laminar, scalar support, unsigned seed)
+    :
+        nDim(nDim_), dp(0.01), h(0.5*support*0.01)
+    {
+        std::mt19937_64 gen(seed);
+        std::uniform_real_distribution<scalar> u(-1, 1);
+        if (nDim == 2) nz = 1;
+        n = label(nx)*ny*nz;
+        f.resize(n, sps, false);
+        label k = 0;
+        for (int z = 0; z < nz; ++z)
+        for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x, ++k)
+        {
+            const bool wall = (nDim == 2 ? y : z) < 2;
+            const scalar jitter = wall ? 0 : 0.3*dp;
+            f.position[k] = {(x + 0.5)*dp + jitter*u(gen),
+                             (y + 0.5)*dp + jitter*u(gen),
+                             nDim == 3 ? (z + 0.5)*dp + jitter*u(gen) : 0};
+            f.kind[k] = wall ? wallKind : fluidKind;
+            f.velocity[k] = wall ? vec3{0, 0, 0}
+              : vec3{u(gen), u(gen), nDim == 3 ? u(gen) : 0};
+            f.rho[k] = 1000*(1 + 0.01*u(gen));
+            f.p[k] = 1e4*u(gen);
+            f.mass[k] = 1000*std::pow(dp, nDim);
+            f.body[k] = wall ? 0 : 1;
+            f.id[k] = k;
+            if (sps)
+            {
+                f.tau[k] = {u(gen), u(gen), u(gen), u(gen), u(gen), u(gen)};
+            }
+        }
+        // Shuffle, then sort by cell as the solver does.
+        std::vector<label> perm(n);
+        for (label i = 0; i < n; ++i) perm[i] = i;
+        std::shuffle(perm.begin(), perm.end(), gen);
+        f.reorder(perm, n, sps, false);
+        const vec3 upper{(nx + 1)*dp, (ny + 1)*dp, (nz + 1)*dp};
+        const cellGrid grid = makeCellGrid({-dp, -dp, nDim == 3 ? -dp : 0},
+            upper, 2*h, divisor, nDim);
+        buildCellList(openmpExec{}, grid, f.position.data(), n, cells);
+        f.reorder(cells.order, cells.nInside, sps, false);
+        parallelFor(openmpExec{}, n, inverseDensityOp{f.view()});
+
+        c.h = h;
+        c.support2 = 4*h*h;
+        c.eta2 = 0.01*h*h;
+        c.c0 = 30;
+        c.rho0 = 1000;
+        c.g = nDim == 3 ? vec3{0, 0, -9.81} : vec3{0, -9.81, 0};
+        c.laminar = laminar;
+        c.fourNu = 4e-3;
+        c.alphaC0H = 0.05*c.c0*h;
+        c.ddtCoefficient = 0.1*2*h*c.c0;
+        c.hydrostaticFactor = c.rho0/(c.c0*c.c0);
+        c.sps = sps;
+        c.shifting = false;
+        c.shiftNoBoundary = false;
+        c.tensileInvWdp = 0;
+    }
+};
+
+struct rates
+{
+    std::vector<vec3> acceleration;
+    std::vector<scalar> drho, visc;
+};
+
+template<class Kernel>
+rates gather(cloud& cl, const Kernel& kernel)
+{
+    std::vector<scalar> visc(cl.n, 0);
+    particleView v = cl.f.view();
+    parallelFor(openmpExec{}, cl.n, fluidRatesLoopOp<Kernel>{
+        {kernel, cl.cells.grid, cl.cells.cellStart.data(), v, cl.c},
+        visc.data()});
+    for (label i = 0; i < cl.n; ++i)
+    {
+        if (cl.f.kind[i] != fluidKind) visc[i] = 0;
+    }
+    return {cl.f.acceleration, cl.f.drho, visc};
+}
+
+template<class Exec, class Kernel>
+rates pairs(Exec exec, cloud& cl, const Kernel& kernel)
+{
+    std::vector<scalar> visc(cl.n, 0);
+    pairRates(exec, kernel, cl.cells, cl.f.view(), cl.c, visc.data());
+    return {cl.f.acceleration, cl.f.drho, visc};
+}
+
+template<class Kernel>
+void compare(int nDim, int divisor, bool sps, bool laminar)
+{
+    SCOPED_TRACE(::testing::Message() << nDim << "D, cells of 2h/" << divisor
+        << (sps ? ", SPS" : "") << (laminar ? ", laminar" : ", artificial"));
+    cloud cl(nDim, 14, 12, 10, divisor, sps, laminar, 3, 7u + divisor);
+    const Kernel kernel(cl.h, nDim);
+    if (Kernel::tensileCorrection)
+    {
+        cl.c.tensileInvWdp = 1/kernel.W(cl.dp);
+    }
+    const rates a = gather(cl, kernel);
+    const rates b = pairs(openmpExec{}, cl, kernel);
+    const rates s = pairs(serialExec{}, cl, kernel);
+
+    scalar aScale = 0, dScale = 0, vScale = 0;
+    label nFluid = 0;
+    for (label i = 0; i < cl.n; ++i)
+    {
+        aScale = std::max(aScale, mag(a.acceleration[i]));
+        dScale = std::max(dScale, std::fabs(a.drho[i]));
+        vScale = std::max(vScale, a.visc[i]);
+        nFluid += cl.f.kind[i] == fluidKind;
+    }
+    ASSERT_GT(nFluid, 100);
+    ASSERT_GT(aScale, 0);
+    ASSERT_GT(dScale, 0);
+    ASSERT_GT(vScale, 0);
+    scalar aErr = 0, dErr = 0, vErr = 0;
+    for (label i = 0; i < cl.n; ++i)
+    {
+        aErr = std::max(aErr, mag(a.acceleration[i] - b.acceleration[i]));
+        dErr = std::max(dErr, std::fabs(a.drho[i] - b.drho[i]));
+        vErr = std::max(vErr, std::fabs(a.visc[i] - b.visc[i]));
+        ASSERT_EQ(b.acceleration[i].x, s.acceleration[i].x) << i;
+        ASSERT_EQ(b.acceleration[i].y, s.acceleration[i].y) << i;
+        ASSERT_EQ(b.acceleration[i].z, s.acceleration[i].z) << i;
+        ASSERT_EQ(b.drho[i], s.drho[i]) << i;
+    }
+    EXPECT_LT(aErr, 1e-12*aScale);
+    EXPECT_LT(dErr, 1e-12*dScale);
+    EXPECT_LT(vErr, 1e-12*vScale);
+}
+
+} // End anonymous namespace
+
+
+TEST(pairRates, equalsGatherForm)
+{
+    for (const int nDim : {2, 3})
+    {
+        for (const int divisor : {1, 2})
+        {
+            for (const bool sps : {false, true})
+            {
+                compare<wendlandC2Kernel>(nDim, divisor, sps, true);
+                compare<wendlandC2Kernel>(nDim, divisor, sps, false);
+                compare<cubicSplineKernel>(nDim, divisor, sps, true);
+            }
+        }
+    }
+}
