@@ -36,50 +36,47 @@ void particleFields::resizeStepFields(const label n, const bool withSps,
 }
 
 
-namespace
-{
-
-template<class T>
-void gather(std::vector<T>& field, const std::vector<label>& order,
-            const label n, std::vector<T>& scratch)
-{
-    scratch.resize(n);
-    const T* src = field.data();
-    T* dst = scratch.data();
-    const label* o = order.data();
-    parallelFor(openmpExec{}, n, [=](label k) { dst[k] = src[o[k]]; });
-    field.swap(scratch);
-    field.resize(n);
-}
-
-} // End anonymous namespace
-
-
 void particleFields::reorder(const std::vector<label>& order, const label n,
                              const bool withSps, const bool withShifting)
 {
+    // The fields recomputed every step are the targets of the gather, so
+    // one pass over the particles (one parallel region) moves every field
+    // that lives across steps, without adding memory. The pressure of the
+    // fluid moves too: the wall extrapolation and the rates at the start
+    // of a step use it before it is recomputed.
+    velocity0.resize(n);
+    acceleration.resize(n);
+    rho0.resize(n);
+    drho.resize(n);
+    invRho.resize(n);
+    std::vector<std::uint8_t> newKind(n), newBody(n);
+    std::vector<label> newId(n);
+    const label* o = order.data();
+    parallelFor(openmpExec{}, n, [&](const label k)
     {
-        std::vector<vec3> scratch;
-        gather(position, order, n, scratch);
-        gather(velocity, order, n, scratch);
-    }
-    {
-        std::vector<scalar> scratch;
-        gather(rho, order, n, scratch);
-        // The pressure of the fluid is used before it is next recomputed
-        // (wall extrapolation and rates at the start of a step).
-        gather(p, order, n, scratch);
-        gather(mass, order, n, scratch);
-    }
-    {
-        std::vector<std::uint8_t> scratch;
-        gather(kind, order, n, scratch);
-        gather(body, order, n, scratch);
-    }
-    {
-        std::vector<label> scratch;
-        gather(id, order, n, scratch);
-    }
+        const label old = o[k];
+        velocity0[k] = position[old];
+        acceleration[k] = velocity[old];
+        rho0[k] = rho[old];
+        drho[k] = p[old];
+        invRho[k] = mass[old];
+        newKind[k] = kind[old];
+        newBody[k] = body[old];
+        newId[k] = id[old];
+    });
+    position.swap(velocity0);
+    velocity.swap(acceleration);
+    rho.swap(rho0);
+    p.swap(drho);
+    mass.swap(invRho);
+    kind.swap(newKind);
+    body.swap(newBody);
+    id.swap(newId);
+    position.resize(n);
+    velocity.resize(n);
+    rho.resize(n);
+    p.resize(n);
+    mass.resize(n);
     // Recomputed every step: only the size changes.
     resizeStepFields(n, withSps, withShifting);
 }
