@@ -418,6 +418,15 @@ void sphSolver::sortParticles()
     }
     particles_.reorder(cells_.order, nInside, model_.sps,
                        model_.shifting != shiftingType::none);
+
+    // Which walls have fluid near them this step.
+    cellHasFluid_.resize(grid_.nCells());
+    nearFluid_.resize(nInside);
+    parallelFor(openmpExec{}, grid_.nCells(), cellHasFluidOp{
+        cells_.cellStart.data(), particles_.kind.data(),
+        cellHasFluid_.data()});
+    parallelFor(openmpExec{}, nInside, nearFluidOp{grid_, cells_.keys.data(),
+        particles_.kind.data(), cellHasFluid_.data(), nearFluid_.data()});
 }
 
 
@@ -429,7 +438,8 @@ void sphSolver::updateWalls()
     {
         using K = decltype(kernel);
         parallelFor(openmpExec{}, v.n, adamiWallOp<K>{kernel, grid_,
-            cells_.cellStart.data(), v, eos_, support2, model_.g});
+            cells_.cellStart.data(), v, eos_, support2, model_.g,
+            nearFluid_.data()});
         if (model_.sps)
         {
             const scalar filter = model_.dp
@@ -482,7 +492,8 @@ void sphSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
             return;
         }
         // Without shifting: each pair once (half the pair work).
-        pairRates(openmpExec{}, kernel, cells_, v, c, viscTerm_.data());
+        pairRates(openmpExec{}, kernel, cells_, nearFluid_.data(), v, c,
+                  viscTerm_.data());
     });
     const stepTerms t = parallelReduce(openmpExec{}, v.n,
         stepTermsOfRatesOp{v, viscTerm_.data(), model_.g},
