@@ -361,7 +361,18 @@ void particleGenerator::printSummary(std::ostream& os) const
            << s.nParticles << " particles, volume " << s.volume << unit;
         if (s.shapeVolume >= 0)
         {
-            os << " (shapes " << s.shapeVolume << unit << ")";
+            os << " (shapes " << s.shapeVolume << unit;
+            if (s.shapeVolume > 0)
+            {
+                // particles x dp^d against the shapes: the filling error.
+                std::ostringstream err;
+                err.setf(std::ios::fixed | std::ios::showpos);
+                err.precision(2);
+                const scalar e = 100*(s.volume - s.shapeVolume)/s.shapeVolume;
+                err << (std::abs(e) < 0.005 ? scalar(0) : e);   // no -0.00
+                os << ", error " << err.str() << " %";
+            }
+            os << ")";
         }
         if (s.nDropped)
         {

@@ -198,7 +198,8 @@ TEST(particleGenerator, exampleCase)
     gen.printSummary(os);
     const std::string log = os.str();
     EXPECT_NE(log.find("    gate (solid): 40 particles, volume 0.004 m^2"
-                       " (shapes 0.004 m^2)\n"), std::string::npos) << log;
+                       " (shapes 0.004 m^2, error +0.00 %)\n"),
+              std::string::npos) << log;
     EXPECT_NE(log.find("    tank (wall): 1116 particles"), std::string::npos)
         << log;
     EXPECT_NE(log.find("    water (fluid): "
