@@ -157,7 +157,7 @@ void particleGenerator::readBody
     }
     if (dict.found("shapes"))
     {
-        spec.shapes.addShapes(dict.subDict("shapes"), dp_);
+        spec.shapes.addShapes(dict.subDict("shapes"), dp_, caseDir_);
     }
 
     if (dict.found("rho"))
