@@ -298,7 +298,8 @@ void triSurface::analyseEdges()
         const vec3& a = points_[faces_[f][0]];
         const scalar area = magSqr(cross(points_[faces_[f][1]] - a,
                                          points_[faces_[f][2]] - a));
-        if (area > largestArea[shellOf[f]])
+        // (The first face of a shell counts even when its area overflows.)
+        if (largest[shellOf[f]] < 0 || area > largestArea[shellOf[f]])
         {
             largestArea[shellOf[f]] = area;
             largest[shellOf[f]] = label(f);

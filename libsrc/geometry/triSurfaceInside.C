@@ -34,6 +34,22 @@ inline scalar edgeFunction
     return e;
 }
 
+
+// Bin of a coordinate already scaled to bin units, clamped to [0, n) and
+// safe for NaN and overflow (a cast of those would be undefined).
+inline std::int64_t clampedBin(scalar x, std::int64_t n)
+{
+    if (!(x >= 0))
+    {
+        return 0;
+    }
+    if (!(x < scalar(n)))
+    {
+        return n - 1;
+    }
+    return std::int64_t(x);
+}
+
 } // End anonymous namespace
 
 
@@ -101,10 +117,13 @@ void triSurfaceInside::build(const triSurface& surf, int axis)
 
     // About one triangle per bin, fewer bins when long triangles would
     // make the bin lists much longer than the triangle list.
+    // (A degenerate or overflowing extent gets one bin.)
     const scalar nTarget = std::max<scalar>(1, scalar(g.triangles.size()));
-    const scalar cell = std::sqrt(eu*ev/nTarget);
-    g.nu = std::clamp<std::int64_t>(std::int64_t(std::ceil(eu/cell)), 1, 4096);
-    g.nv = std::clamp<std::int64_t>(std::int64_t(std::ceil(ev/cell)), 1, 4096);
+    const scalar cell = std::sqrt(eu/nTarget)*std::sqrt(ev);
+    const bool usable = std::isfinite(eu) && std::isfinite(ev)
+        && std::isfinite(cell) && cell > 0;
+    g.nu = usable ? 1 + clampedBin(eu/cell, 4096) : 1;
+    g.nv = usable ? 1 + clampedBin(ev/cell, 4096) : 1;
 
     const auto binRange = [&](const projected& t, std::int64_t lo[2],
                               std::int64_t hi[2])
@@ -113,22 +132,18 @@ void triSurfaceInside::build(const triSurface& surf, int axis)
         const scalar uMax = std::max({t.u[0], t.u[1], t.u[2]});
         const scalar vMin = std::min({t.v[0], t.v[1], t.v[2]});
         const scalar vMax = std::max({t.v[0], t.v[1], t.v[2]});
-        lo[0] = std::clamp<std::int64_t>(
-            std::int64_t(std::floor((uMin - g.u0)*g.invDu)), 0, g.nu - 1);
-        hi[0] = std::clamp<std::int64_t>(
-            std::int64_t(std::floor((uMax - g.u0)*g.invDu)), 0, g.nu - 1);
-        lo[1] = std::clamp<std::int64_t>(
-            std::int64_t(std::floor((vMin - g.v0)*g.invDv)), 0, g.nv - 1);
-        hi[1] = std::clamp<std::int64_t>(
-            std::int64_t(std::floor((vMax - g.v0)*g.invDv)), 0, g.nv - 1);
+        lo[0] = clampedBin((uMin - g.u0)*g.invDu, g.nu);
+        hi[0] = clampedBin((uMax - g.u0)*g.invDu, g.nu);
+        lo[1] = clampedBin((vMin - g.v0)*g.invDv, g.nv);
+        hi[1] = clampedBin((vMax - g.v0)*g.invDv, g.nv);
     };
 
     const std::int64_t maxItems =
         16*std::int64_t(g.triangles.size()) + 1000000;
     while (true)
     {
-        g.invDu = scalar(g.nu)/eu;
-        g.invDv = scalar(g.nv)/ev;
+        g.invDu = usable ? scalar(g.nu)/eu : 0;
+        g.invDv = usable ? scalar(g.nv)/ev : 0;
         std::int64_t nItems = 0;
         for (const projected& t : g.triangles)
         {

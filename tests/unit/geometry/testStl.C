@@ -469,6 +469,27 @@ TEST(stl, tinyGapsAreMergedOrOutvoted)
 }
 
 
+TEST(stl, overflowingCoordinatesDoNotCrash)
+{
+    // Found with the fuzz target: a cube of +-1e308 overflows every area
+    // and extent to inf or NaN. Answers are meaningless, but no crash.
+    const stlData d = [&]()
+    {
+        const std::string text = asciiSTL(cube({-1e308, -1e308, -1e308},
+                                               {1e308, 1e308, 1e308}));
+        return parseSTL(text.data(), text.size(), "huge.stl");
+    }();
+    for (const scalar merge : {0.0, 1e-6, 1e300})
+    {
+        const triSurface surf(d.vertices, merge);
+        const triSurfaceInside test(surf);
+        (void)surf.volume();
+        (void)test.inside({0, 0, 0});
+        (void)test.inside({1e308, 0, -1e308});
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Transforms * * * * * * * * * * * * * * * * //
 
 TEST(stl, scaleRotateTranslate)
