@@ -9,6 +9,7 @@
 #include "lattice.H"
 #include "pointLocator.H"
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <sstream>
@@ -271,6 +272,13 @@ void particleGenerator::generate()
 
     for (const bodyType type : buildOrder)
     {
+        const bool anyOfType = std::any_of(specs_.begin(), specs_.end(),
+            [&](const bodySpec& spec) { return spec.type == type; });
+        if (!anyOfType)
+        {
+            continue;   // no locator over millions of obstacles for nothing
+        }
+
         // Built once per stage: walls avoid solids, fluids avoid both.
         const pointLocator near(type == bodyType::solid
             ? std::vector<vec3>() : obstacles, dp_);
