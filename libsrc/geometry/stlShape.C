@@ -76,9 +76,29 @@ stlShape::stlShape
     int nDimensions,
     const std::filesystem::path& caseDir
 )
+try
 :
     stlShape(name, read(name, dict, nDimensions, caseDir))
 {}
+catch (const FatalError& err)
+{
+    // An error in the surface file: say where the dictionary asked for
+    // it, then what is wrong (errors in the dictionary itself name it).
+    if (err.file() == dict.file())
+    {
+        throw;
+    }
+    std::string message = err.message();
+    const std::string own = "Shape '" + name + "': ";
+    if (message.compare(0, own.size(), own) == 0)
+    {
+        message.erase(0, own.size());
+    }
+    std::ostringstream os;
+    os << "Shape '" << name << "' (" << dict.file() << " line " << dict.line()
+       << "): " << message;
+    throw FatalError(os.str(), err.file(), err.line(), err.keyword());
+}
 
 
 stlShape::stlShape(std::string name, input in)
@@ -132,19 +152,7 @@ stlShape::input stlShape::read
     }
     in.source = path.string();
 
-    stlData stl;
-    try
-    {
-        stl = readSTL(path);
-    }
-    catch (const FatalError& err)
-    {
-        // Where the surface was asked for, then what is wrong with it.
-        std::ostringstream os;
-        os << "Shape '" << name << "' (" << dict.file() << " line "
-           << dict.line() << "): " << err.message();
-        throw FatalError(os.str(), err.file(), err.line(), "file");
-    }
+    stlData stl = readSTL(path);
 
     const scalar scale = dict.getOrDefault<scalar>("scale", 1);
     if (!(std::isfinite(scale) && scale != 0))

@@ -216,6 +216,18 @@ TEST(stl, badFilesThroughTheShape)
     expectError(err, (dir.path()/"cut.stl.gz").string(), 0,
                 {"Shape 's'", "gzip"});
 
+    // An open surface, named with where the shape was asked for.
+    soup open = cube({0, 0, 0}, {1, 1, 1});
+    open.resize(open.size() - 3);
+    writeFile(dir.path()/"open.stl", asciiSTL(open));
+    err = catchFatal([&]()
+    {
+        stlFromText("shape stl; file open.stl;", dir.path());
+    });
+    expectError(err, (dir.path()/"open.stl").string(), 0,
+                {"Shape 's' (" + dict.string() + " line 1): the surface is"
+                 " not closed: 3 open edges"});
+
     // An empty file, named with where the shape was asked for.
     writeFile(dir.path()/"empty.stl", "");
     err = catchFatal([&]()
