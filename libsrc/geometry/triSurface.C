@@ -288,43 +288,74 @@ void triSurface::analyseEdges()
         ++nShells_;
     }
 
-    // Each shell outwards: a ray from its largest triangle along the
-    // normal crosses the surface an odd number of times when the normal
-    // points into the material.
-    std::vector<label> largest(nShells_, -1);
-    std::vector<scalar> largestArea(nShells_, -1);
+    // Each shell outwards: a ray from a triangle's centre along its normal
+    // crosses the surface an odd number of times when the normal points
+    // into the material. The three largest triangles of the shell vote, so
+    // that one ray grazing an edge cannot flip a whole shell.
+    constexpr int nVoters = 3;
+    std::vector<std::array<label, nVoters>> voters(nShells_);
+    std::vector<std::array<scalar, nVoters>> voterArea(nShells_);
+    for (std::size_t s = 0; s < nShells_; ++s)
+    {
+        voters[s].fill(-1);
+        voterArea[s].fill(-1);
+    }
     for (std::size_t f = 0; f < faces_.size(); ++f)
     {
         const vec3& a = points_[faces_[f][0]];
-        const scalar area = magSqr(cross(points_[faces_[f][1]] - a,
-                                         points_[faces_[f][2]] - a));
-        // (The first face of a shell counts even when its area overflows.)
-        if (largest[shellOf[f]] < 0 || area > largestArea[shellOf[f]])
+        scalar area = magSqr(cross(points_[faces_[f][1]] - a,
+                                   points_[faces_[f][2]] - a));
+        // (Faces whose area overflows still get a place.)
+        area = std::isfinite(area) ? area : 0;
+        label candidate = label(f);
+        auto& v = voters[shellOf[f]];
+        auto& va = voterArea[shellOf[f]];
+        for (int i = 0; i < nVoters; ++i)
         {
-            largestArea[shellOf[f]] = area;
-            largest[shellOf[f]] = label(f);
+            if (v[i] < 0 || area > va[i])
+            {
+                std::swap(v[i], candidate);
+                std::swap(va[i], area);
+                if (candidate < 0)
+                {
+                    break;
+                }
+            }
         }
     }
     std::vector<signed char> flipShell(nShells_, 1);
     for (std::size_t s = 0; s < nShells_; ++s)
     {
-        const face& F = faces_[largest[s]];
-        const vec3& a = points_[F[0]];
-        const vec3& b = points_[F[1]];
-        const vec3& c = points_[F[2]];
-        const vec3 o = (a + b + c)/scalar(3);
-        const vec3 n = scalar(outward_[largest[s]])*cross(b - a, c - a);
-        std::size_t hits = 0;
-        for (std::size_t g = 0; g < faces_.size(); ++g)
+        int inwards = 0, votes = 0;
+        for (const label f : voters[s])
         {
-            if (label(g) != largest[s]
-             && rayHits(o, n, points_[faces_[g][0]], points_[faces_[g][1]],
-                        points_[faces_[g][2]]))
+            if (f < 0)
             {
-                ++hits;
+                continue;
             }
+            const face& F = faces_[f];
+            const vec3& a = points_[F[0]];
+            const vec3& b = points_[F[1]];
+            const vec3& c = points_[F[2]];
+            const vec3 o = (a + b + c)/scalar(3);
+            const vec3 n = scalar(outward_[f])*cross(b - a, c - a);
+            std::size_t hits = 0;
+            for (std::size_t g = 0; g < faces_.size(); ++g)
+            {
+                if
+                (
+                    label(g) != f
+                 && rayHits(o, n, points_[faces_[g][0]],
+                            points_[faces_[g][1]], points_[faces_[g][2]])
+                )
+                {
+                    ++hits;
+                }
+            }
+            inwards += hits % 2;
+            ++votes;
         }
-        flipShell[s] = hits % 2 ? -1 : 1;
+        flipShell[s] = 2*inwards > votes ? -1 : 1;
     }
     for (std::size_t f = 0; f < faces_.size(); ++f)
     {
