@@ -5,6 +5,7 @@
 // surface.
 
 #include "triSurface.H"
+#include "triSurfaceInside.H"
 
 #include <algorithm>
 #include <cmath>
@@ -38,35 +39,6 @@ struct cellHash
         return std::size_t(h);
     }
 };
-
-// Does the ray o + t d, t > 0, cross triangle (a, b, c)? (Moller-Trumbore;
-// used only for the few orientation rays, so plain double is enough.)
-bool rayHits(const vec3& o, const vec3& d, const vec3& a, const vec3& b,
-             const vec3& c)
-{
-    const vec3 e1 = b - a;
-    const vec3 e2 = c - a;
-    const vec3 p = cross(d, e2);
-    const scalar det = dot(e1, p);
-    if (det == 0)
-    {
-        return false;
-    }
-    const scalar inv = 1/det;
-    const vec3 s = o - a;
-    const scalar u = dot(s, p)*inv;
-    if (u < 0 || u > 1)
-    {
-        return false;
-    }
-    const vec3 q = cross(s, e1);
-    const scalar v = dot(d, q)*inv;
-    if (v < 0 || u + v > 1)
-    {
-        return false;
-    }
-    return dot(e2, q)*inv > 0;
-}
 
 } // End anonymous namespace
 
@@ -288,10 +260,12 @@ void triSurface::analyseEdges()
         ++nShells_;
     }
 
-    // Each shell outwards: a ray from a triangle's centre along its normal
-    // crosses the surface an odd number of times when the normal points
-    // into the material. The three largest triangles of the shell vote, so
-    // that one ray grazing an edge cannot flip a whole shell.
+    // Each shell outwards: a point just off a triangle on its normal side
+    // lies inside the material when the normal points inwards. The three
+    // largest triangles of the shell vote, and the inside test is the
+    // watertight three-ray one of triSurfaceInside, on all the shells (so
+    // that an inner shell comes out as a cavity): a few queries per shell,
+    // not a pass over every triangle.
     constexpr int nVoters = 3;
     std::vector<std::array<label, nVoters>> voters(nShells_);
     std::vector<std::array<scalar, nVoters>> voterArea(nShells_);
@@ -323,6 +297,7 @@ void triSurface::analyseEdges()
             }
         }
     }
+    const triSurfaceInside inside(*this);
     std::vector<signed char> flipShell(nShells_, 1);
     for (std::size_t s = 0; s < nShells_; ++s)
     {
@@ -337,22 +312,16 @@ void triSurface::analyseEdges()
             const vec3& a = points_[F[0]];
             const vec3& b = points_[F[1]];
             const vec3& c = points_[F[2]];
-            const vec3 o = (a + b + c)/scalar(3);
             const vec3 n = scalar(outward_[f])*cross(b - a, c - a);
-            std::size_t hits = 0;
-            for (std::size_t g = 0; g < faces_.size(); ++g)
+            const scalar twiceArea = mag(n);
+            if (!(twiceArea > 0) || !std::isfinite(twiceArea))
             {
-                if
-                (
-                    label(g) != f
-                 && rayHits(o, n, points_[faces_[g][0]],
-                            points_[faces_[g][1]], points_[faces_[g][2]])
-                )
-                {
-                    ++hits;
-                }
+                continue;
             }
-            inwards += hits % 2;
+            // A thousandth of the triangle's size off its centre.
+            const vec3 p = (a + b + c)/scalar(3)
+              + (1e-3*std::sqrt(twiceArea)/twiceArea)*n;
+            inwards += inside.inside(p);
             ++votes;
         }
         flipShell[s] = 2*inwards > votes ? -1 : 1;

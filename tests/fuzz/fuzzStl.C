@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data,
         return 0;
     }
 
-    // The orientation rays cost shells x triangles: keep runs short.
+    // Keep each run short.
     if (stl.nTriangles() > 4096)
     {
         return 0;

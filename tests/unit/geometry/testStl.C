@@ -443,6 +443,43 @@ TEST(stl, cavityAndTouchingBodies)
 }
 
 
+TEST(stl, nestedShellsAndManyShells)
+{
+    // A ball in a hollow ball: the volumes alternate in sign whatever the
+    // orientation of each shell.
+    soup nested = icosphere({0, 0, 0}, 1, 3);
+    const soup middle = flipped(icosphere({0, 0, 0}, 0.7, 3), 1);
+    const soup inner = icosphere({0.05, 0, 0}, 0.3, 3);
+    nested.insert(nested.end(), middle.begin(), middle.end());
+    nested.insert(nested.end(), inner.begin(), inner.end());
+    const stlShape n("n", flipped(nested, 5), "n");
+    const scalar v1 = stlShape("a", icosphere({0, 0, 0}, 1, 3), "a").volume();
+    const scalar v2 =
+        stlShape("b", icosphere({0, 0, 0}, 0.7, 3), "b").volume();
+    const scalar v3 =
+        stlShape("c", icosphere({0.05, 0, 0}, 0.3, 3), "c").volume();
+    EXPECT_EQ(n.surface().nShells(), 3u);
+    EXPECT_NEAR(n.volume(), v1 - v2 + v3, 1e-12);
+    EXPECT_TRUE(n.inside({0.85, 0, 0}, 0));
+    EXPECT_FALSE(n.inside({0.5, 0, 0}, 0));
+    EXPECT_TRUE(n.inside({0.1, 0, 0}, 0));
+
+    // 4,000 separate cubes (48,000 triangles): a few inside queries per
+    // shell orient them, not a pass over all triangles per shell.
+    soup many;
+    for (int i = 0; i < 4000; ++i)
+    {
+        const vec3 lo{scalar(i % 20), scalar((i/20) % 20), scalar(i/400)};
+        const soup c = i % 2 ? flipped(cube(lo, lo + vec3{0.5, 0.5, 0.5}), 1)
+                             : cube(lo, lo + vec3{0.5, 0.5, 0.5});
+        many.insert(many.end(), c.begin(), c.end());
+    }
+    const stlShape m("m", many, "m");
+    EXPECT_EQ(m.surface().nShells(), 4000u);
+    EXPECT_NEAR(m.volume(), 4000*0.125, 1e-9);
+}
+
+
 TEST(stl, tinyGapsAreMergedOrOutvoted)
 {
     const soup s = icosphere({0, 0, 0}, 1, 3);
