@@ -9,6 +9,7 @@
 #include "lattice.H"
 #include "pointLocator.H"
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <sstream>
@@ -157,7 +158,7 @@ void particleGenerator::readBody
     }
     if (dict.found("shapes"))
     {
-        spec.shapes.addShapes(dict.subDict("shapes"), dp_);
+        spec.shapes.addShapes(dict.subDict("shapes"), dp_, caseDir_);
     }
 
     if (dict.found("rho"))
@@ -271,6 +272,13 @@ void particleGenerator::generate()
 
     for (const bodyType type : buildOrder)
     {
+        const bool anyOfType = std::any_of(specs_.begin(), specs_.end(),
+            [&](const bodySpec& spec) { return spec.type == type; });
+        if (!anyOfType)
+        {
+            continue;   // no locator over millions of obstacles for nothing
+        }
+
         // Built once per stage: walls avoid solids, fluids avoid both.
         const pointLocator near(type == bodyType::solid
             ? std::vector<vec3>() : obstacles, dp_);
@@ -361,7 +369,18 @@ void particleGenerator::printSummary(std::ostream& os) const
            << s.nParticles << " particles, volume " << s.volume << unit;
         if (s.shapeVolume >= 0)
         {
-            os << " (shapes " << s.shapeVolume << unit << ")";
+            os << " (shapes " << s.shapeVolume << unit;
+            if (s.shapeVolume > 0)
+            {
+                // particles x dp^d against the shapes: the filling error.
+                std::ostringstream err;
+                err.setf(std::ios::fixed | std::ios::showpos);
+                err.precision(2);
+                const scalar e = 100*(s.volume - s.shapeVolume)/s.shapeVolume;
+                err << (std::abs(e) < 0.005 ? scalar(0) : e);   // no -0.00
+                os << ", error " << err.str() << " %";
+            }
+            os << ")";
         }
         if (s.nDropped)
         {

@@ -15,7 +15,12 @@ region::region(int nDimensions)
 {}
 
 
-void region::addShapes(const dictionary& shapesDict, scalar dp)
+void region::addShapes
+(
+    const dictionary& shapesDict,
+    scalar dp,
+    const std::filesystem::path& caseDir
+)
 {
     const std::vector<std::string> names = shapesDict.keys();
     if (names.empty())
@@ -41,7 +46,10 @@ void region::addShapes(const dictionary& shapesDict, scalar dp)
                   " are: (" + valid + ")");
         }
         std::unique_ptr<shape> s =
-            shape::New(name, *dict, nDimensions_, dp, {"operation"});
+            shape::New
+            (
+                name, *dict, nDimensions_, dp, {"operation"}, caseDir
+            );
         const operation op =
             dict->getWordOrDefault("operation", {"add", "subtract"}, "add")
          == "add"

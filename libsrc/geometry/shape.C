@@ -9,6 +9,7 @@
 #include "cylinderShape.H"
 #include "error.H"
 #include "sphereShape.H"
+#include "stlShape.H"
 
 #include <sstream>
 
@@ -31,7 +32,7 @@ shape::shape(std::string name, int nDimensions)
 const std::vector<std::string>& shape::types()
 {
     static const std::vector<std::string> names =
-        {"box", "container", "cylinder", "sphere"};
+        {"box", "container", "cylinder", "sphere", "stl"};
     return names;
 }
 
@@ -42,7 +43,8 @@ std::unique_ptr<shape> shape::New
     const dictionary& dict,
     int nDimensions,
     scalar dp,
-    const std::vector<std::string>& extraKeywords
+    const std::vector<std::string>& extraKeywords,
+    const std::filesystem::path& caseDir
 )
 {
     const std::string type = dict.getWord("shape", types());
@@ -71,6 +73,11 @@ std::unique_ptr<shape> shape::New
     {
         check(cylinderShape::keywords());
         return std::make_unique<cylinderShape>(name, dict, nDimensions);
+    }
+    if (type == "stl")
+    {
+        check(stlShape::keywords());
+        return std::make_unique<stlShape>(name, dict, nDimensions, caseDir);
     }
     check(containerShape::keywords());
     return std::make_unique<containerShape>(name, dict, nDimensions, dp);

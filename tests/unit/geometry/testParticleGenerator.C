@@ -198,7 +198,8 @@ TEST(particleGenerator, exampleCase)
     gen.printSummary(os);
     const std::string log = os.str();
     EXPECT_NE(log.find("    gate (solid): 40 particles, volume 0.004 m^2"
-                       " (shapes 0.004 m^2)\n"), std::string::npos) << log;
+                       " (shapes 0.004 m^2, error +0.00 %)\n"),
+              std::string::npos) << log;
     EXPECT_NE(log.find("    tank (wall): 1116 particles"), std::string::npos)
         << log;
     EXPECT_NE(log.find("    water (fluid): "
@@ -430,7 +431,7 @@ std::vector<badCase> badCases()
          "found -0.01"}},
         {"unknownShape", replaced(d, "shape sphere", "shape ball"),
          where::dict, "hole", {"Keyword 'shape'", "unknown value 'ball'",
-         "(box container cylinder sphere)"}},
+         "(box container cylinder sphere stl)"}},
         {"unknownBodyType", replaced(d, "type        fluid;",
          "type        liquid;"), where::dict, "liquid",
          {"Keyword 'type'", "unknown value 'liquid'", "(fluid solid wall)"}},

@@ -2,8 +2,9 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 // generateParticles: fills the bodies of system/generateParticlesDict (fluid,
-// wall and solid, from boxes, spheres, cylinders and containers) with
-// particles on a lattice of spacing dp and writes them to 0/<body>/.
+// wall and solid, from boxes, spheres, cylinders, containers and closed STL
+// surfaces) with particles on a lattice of spacing dp and writes them to
+// 0/<body>/.
 
 #include "argList.H"
 #include "error.H"
