@@ -90,8 +90,8 @@ sphSolver::sphSolver(const fs::path& caseDir, std::ostream& log)
         << "    domain " << str(grid_.origin) << " "
         << grid_.nx << " x " << grid_.ny << " x " << grid_.nz
         << " cells of " << grid_.cellSize << " m\n"
-        << "    " << particles_.bytesPerParticle()
-        << " bytes per particle\n" << std::endl;
+        << "    " << particles_.bytesPerParticle() + sizeof(std::uint8_t)
+        << " bytes per particle and 5 per cell\n" << std::endl;
 
     functions_ = functionObject::readAll(control_.dict, caseDir_,
         startTimeName_, model_, bodies_);
