@@ -480,12 +480,12 @@ void sphSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
       ? 1/cubicSplineKernel(model_.h, model_.nDimensions).W(model_.dp) : 0;
 
     viscTerm_.resize(v.n);
-    parallelFor(openmpExec{}, v.n, inverseDensityOp{v});
     withKernel(model_, [&](auto kernel)
     {
         using K = decltype(kernel);
         if (c.shifting)
         {
+            parallelFor(openmpExec{}, v.n, inverseDensityOp{v});
             parallelFor(openmpExec{}, v.n, fluidRatesLoopOp<K>{
                 {kernel, grid_, cells_.cellStart.data(), v, c},
                 viscTerm_.data()});
