@@ -9,6 +9,7 @@
 #include "cylinderShape.H"
 #include "error.H"
 #include "sphereShape.H"
+#include "polygonShape.H"
 #include "seedFillShape.H"
 #include "stlShape.H"
 #include "surfaceLayersShape.H"
@@ -34,8 +35,8 @@ shape::shape(std::string name, int nDimensions)
 const std::vector<std::string>& shape::types()
 {
     static const std::vector<std::string> names =
-        {"box", "container", "cylinder", "seedFill", "sphere", "stl",
-         "surfaceLayers"};
+        {"box", "container", "cylinder", "polygon", "seedFill", "sphere",
+         "stl", "surfaceLayers"};
     return names;
 }
 
@@ -77,6 +78,17 @@ std::unique_ptr<shape> shape::New
     {
         check(cylinderShape::keywords());
         return std::make_unique<cylinderShape>(name, dict, nDimensions);
+    }
+    if (type == "polygon")
+    {
+        check(polygonShape::keywords());
+        return std::make_unique<polygonShape>(name, dict, nDimensions);
+    }
+    if (type == "stl" && nDimensions == 2)
+    {
+        check(stlShape::keywords());
+        return std::make_unique<stlSliceShape>(name, dict, nDimensions,
+                                               caseDir);
     }
     if (type == "stl")
     {

@@ -431,7 +431,7 @@ std::vector<badCase> badCases()
          "found -0.01"}},
         {"unknownShape", replaced(d, "shape sphere", "shape ball"),
          where::dict, "hole", {"Keyword 'shape'", "unknown value 'ball'",
-         "(box container cylinder seedFill sphere stl"
+         "(box container cylinder polygon seedFill sphere stl"
          " surfaceLayers)"}},
         {"unknownBodyType", replaced(d, "type        fluid;",
          "type        liquid;"), where::dict, "liquid",

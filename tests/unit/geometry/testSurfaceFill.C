@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <random>
+#include <sstream>
 
 using namespace sphvcpm;
 using namespace sphvcpm::test;
@@ -404,4 +405,120 @@ TEST(surfaceFill, generatorFillsATankFromSTLWithWallsAndWater)
     std::cout << "    seedFill open tank, level 0.4: volume error "
               << 100*error << " %\n";
     EXPECT_NEAR(error, 0, 1e-12);
+}
+
+
+// * * * * * * * * * * * * * * * * * 2D * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+std::size_t count2D(const surfaceCase& c, const std::string& text, scalar dp,
+                    scalar* area = nullptr)
+{
+    const dictionary d = dictionary::fromString("s {" + text + "}",
+                                                c.dictFile());
+    std::unique_ptr<shape> s =
+        shape::New("s", d.subDict("s"), 2, dp, {}, c.dir.path());
+    if (area)
+    {
+        *area = s->volume();
+    }
+    region r(2);
+    r.add(std::move(s));
+    return lattice({0, 0, 0}, dp, 2).fill(r).size();
+}
+
+} // End anonymous namespace
+
+
+TEST(surfaceFill, polygonsFillByTheBoxRule)
+{
+    const surfaceCase c;
+    scalar area = 0;
+    // Both orientations, the boxes' rule on edges: exactly 10 x 10.
+    EXPECT_EQ(count2D(c, "shape polygon; points ((0 0) (1 0) (1 1) (0 1));",
+                      0.1, &area), 100u);
+    EXPECT_DOUBLE_EQ(area, 1);
+    EXPECT_EQ(count2D(c, "shape polygon; points ((0 0) (0 1) (1 1) (1 0));",
+                      0.1), 100u);
+    // Non-convex: an L of three unit squares.
+    EXPECT_EQ(count2D(c, "shape polygon; points ((0 0) (2 0) (2 1) (1 1)"
+                      " (1 2) (0 2));", 0.1, &area), 300u);
+    EXPECT_DOUBLE_EQ(area, 3);
+
+    // A 200-gon of radius 0.5 at 50 dp across.
+    std::ostringstream pts;
+    pts.precision(17);
+    for (int i = 0; i < 200; ++i)
+    {
+        pts << " (" << 0.5*std::cos(2*pi*i/200) << ' '
+            << 0.5*std::sin(2*pi*i/200) << ')';
+    }
+    const std::size_t n = count2D(c, "shape polygon; points (" + pts.str()
+                                  + ");", 0.02, &area);
+    EXPECT_NEAR(area, 0.5*200*0.25*std::sin(2*pi/200), 1e-12);
+    const scalar error = n*0.02*0.02/area - 1;
+    std::cout << "    polygon, circle 50 dp across: area error "
+              << 100*error << " %\n";
+    EXPECT_LT(std::abs(error), 0.01);
+
+    expectError(catchFatal([&]
+    {
+        count2D(c, "shape polygon;\npoints ((0 0) (1 1));", 0.1);
+    }), c.dictFile(), 2, {"Keyword 'points'", "at least 3"});
+    expectError(catchFatal([&]
+    {
+        count2D(c, "shape polygon;\npoints ((0 0) (1 1) (2 2));", 0.1);
+    }), c.dictFile(), 2, {"Keyword 'points'", "no area"});
+    expectError(catchFatal([&]
+    {
+        c.New("shape polygon;\npoints ((0 0) (1 0) (1 1));", 0.1);
+    }), c.dictFile(), 1, {"Shape 's'", "needs nDimensions 2"});
+}
+
+
+TEST(surfaceFill, stlCutByThePlaneZ0)
+{
+    const surfaceCase c;
+    // A box across the plane: exactly the unit square's nodes.
+    c.add("box.stl", cube({0, 0, -0.5}, {1, 1, 0.5}));
+    scalar area = 0;
+    EXPECT_EQ(count2D(c, "shape stl; file \"constant/geometry/box.stl\";",
+                      0.1, &area), 100u);
+    EXPECT_NEAR(area, 1, 1e-14);
+
+    // A sphere (flipped triangles: orientation does not matter) and a
+    // torus about z (an annulus: the even-odd rule makes the hole).
+    c.add("ball.stl", flipped(icosphere({0.5, 0.5, 0}, 0.5, 4)));
+    const std::size_t nBall = count2D(c, "shape stl; file"
+        " \"constant/geometry/ball.stl\";", 0.02, &area);
+    EXPECT_NEAR(area/(pi*0.25), 1, 0.01);
+    const scalar ballError = nBall*0.02*0.02/area - 1;
+
+    c.add("torus.stl", torus({0, 0, 0}, 0.35, 0.15, 96, 32));
+    const std::size_t nTorus = count2D(c, "shape stl; file"
+        " \"constant/geometry/torus.stl\"; rotate { axis (0 0 1); angle 10; }",
+        0.006, &area);
+    EXPECT_NEAR(area/(pi*(0.5*0.5 - 0.2*0.2)), 1, 0.01);
+    const scalar torusError = nTorus*0.006*0.006/area - 1;
+    std::cout << "    stl cut by z = 0, 50 dp across: area error circle "
+              << 100*ballError << " %, annulus " << 100*torusError << " %\n";
+    EXPECT_LT(std::abs(ballError), 0.01);
+    EXPECT_LT(std::abs(torusError), 0.01);
+
+    // An open surface, and one the plane misses.
+    c.add("tank.stl", openTank({0, 0, -0.5}, {1, 1, 0.5}));
+    const std::string tank = (c.dir.path()/"constant"/"geometry"
+                              /"tank.stl").string();
+    expectError(catchFatal([&]
+    {
+        count2D(c, "shape stl; file \"constant/geometry/tank.stl\";", 0.1);
+    }), tank, 0, {"Shape 's'", "not closed", "checkClosed"});
+    expectError(catchFatal([&]
+    {
+        count2D(c, "shape stl; file \"constant/geometry/box.stl\";"
+                " translate (0 0 2);", 0.1);
+    }), (c.dir.path()/"constant"/"geometry"/"box.stl").string(), 0,
+        {"z = 0 does not cut", "translate"});
 }
