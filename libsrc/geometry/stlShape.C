@@ -255,9 +255,9 @@ stlShape::input stlShape::read
 {
     if (nDimensions != 3)
     {
-        dict.fatalAt("shape", "Shape '" + name + "': shape stl fills a closed"
-            " 3D surface and needs nDimensions 3 (2D bodies cut from an STL"
-            " are not available yet)");
+        dict.fatalAt("shape", "Shape '" + name + "': this is the 3D stl"
+            " shape; in 2D, shape::New builds the cut of the surface by"
+            " z = 0 (stlSliceShape)");
     }
 
     return stlDetail::readSurface(name, dict, caseDir);

@@ -131,6 +131,20 @@ triSurfaceDistance::triSurfaceDistance(const triSurface& surf, scalar radius)
         }
     };
 
+    // A cell of the triangle's box that the triangle does not come near
+    // is skipped (a tilted triangle's box is mostly empty): no point of
+    // the cell is within radius when its centre is farther than radius
+    // plus half the cell's diagonal.
+    const scalar reach = radius_ + 0.5*std::sqrt(scalar(3))*h;
+    const auto near = [&](const triSurface::face& f, std::int64_t i,
+                          std::int64_t j, std::int64_t k)
+    {
+        const vec3 c = origin_ + h*vec3{i + 0.5, j + 0.5, k + 0.5};
+        const scalar d2 = magSqr(c - nearestOnTriangle(c, points_[f[0]],
+                                               points_[f[1]], points_[f[2]]));
+        return !(d2 > reach*reach);     // NaN (overflow): keep it
+    };
+
     start_.assign(n_[0]*n_[1]*n_[2] + 1, 0);
     for (int pass = 0; pass < 2; ++pass)
     {
@@ -155,6 +169,10 @@ triSurfaceDistance::triSurfaceDistance(const triSurface& surf, scalar radius)
                     for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
                     {
                         const std::int64_t c = (k*n_[1] + j)*n_[0] + i;
+                        if (!near(faces_[fi], i, j, k))
+                        {
+                            continue;
+                        }
                         if (pass == 0)
                         {
                             ++start_[c + 1];

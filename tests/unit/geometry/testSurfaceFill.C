@@ -139,6 +139,39 @@ TEST(surfaceFill, nearestPointMatchesBruteForce)
 }
 
 
+TEST(surfaceFill, nearestPointOfLargeTiltedTriangles)
+{
+    // Two large triangles whose boxes are mostly empty (the grid skips the
+    // cells they do not come near) against brute force.
+    soup s;
+    addTriangle(s, {0, 0, 0}, {1, 0.1, 1}, {0.2, 1, 0.9});
+    addTriangle(s, {1, 1, 0}, {0, 0.9, 1}, {0.9, 0, 0.8});
+    const triSurface surf(s, 0);
+    const triSurfaceDistance near(surf, 0.02);
+    std::mt19937_64 gen(3);
+    std::uniform_real_distribution<scalar> u(-0.05, 1.05);
+    int nFound = 0;
+    for (int i = 0; i < 20000; ++i)
+    {
+        const vec3 p{u(gen), u(gen), u(gen)};
+        scalar best = 1e300;
+        for (int t = 0; t < 2; ++t)
+        {
+            best = std::min(best, mag(p - triSurfaceDistance::
+                nearestOnTriangle(p, s[3*t], s[3*t + 1], s[3*t + 2])));
+        }
+        const triSurfaceDistance::nearest n = near.find(p);
+        ASSERT_EQ(n.face >= 0, best <= 0.02) << i;
+        if (n.face >= 0)
+        {
+            EXPECT_NEAR(n.distance, best, 1e-15);
+            ++nFound;
+        }
+    }
+    EXPECT_GT(nFound, 500);
+}
+
+
 TEST(surfaceFill, nearestOnTriangleRegions)
 {
     const vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
