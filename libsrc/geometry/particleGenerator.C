@@ -158,7 +158,8 @@ void particleGenerator::readBody
     }
     if (dict.found("shapes"))
     {
-        spec.shapes.addShapes(dict.subDict("shapes"), dp_, caseDir_);
+        spec.shapes.addShapes(dict.subDict("shapes"), dp_, caseDir_,
+                              spec.origin);
     }
 
     if (dict.found("rho"))

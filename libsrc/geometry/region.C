@@ -19,7 +19,8 @@ void region::addShapes
 (
     const dictionary& shapesDict,
     scalar dp,
-    const std::filesystem::path& caseDir
+    const std::filesystem::path& caseDir,
+    const vec3& latticeOrigin
 )
 {
     const std::vector<std::string> names = shapesDict.keys();
@@ -48,7 +49,8 @@ void region::addShapes
         std::unique_ptr<shape> s =
             shape::New
             (
-                name, *dict, nDimensions_, dp, {"operation"}, caseDir
+                name, *dict, nDimensions_, dp, {"operation"}, caseDir,
+                latticeOrigin
             );
         const operation op =
             dict->getWordOrDefault("operation", {"add", "subtract"}, "add")

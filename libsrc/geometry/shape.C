@@ -9,7 +9,10 @@
 #include "cylinderShape.H"
 #include "error.H"
 #include "sphereShape.H"
+#include "polygonShape.H"
+#include "seedFillShape.H"
 #include "stlShape.H"
+#include "surfaceLayersShape.H"
 
 #include <sstream>
 
@@ -32,7 +35,8 @@ shape::shape(std::string name, int nDimensions)
 const std::vector<std::string>& shape::types()
 {
     static const std::vector<std::string> names =
-        {"box", "container", "cylinder", "sphere", "stl"};
+        {"box", "container", "cylinder", "polygon", "seedFill", "sphere",
+         "stl", "surfaceLayers"};
     return names;
 }
 
@@ -44,7 +48,8 @@ std::unique_ptr<shape> shape::New
     int nDimensions,
     scalar dp,
     const std::vector<std::string>& extraKeywords,
-    const std::filesystem::path& caseDir
+    const std::filesystem::path& caseDir,
+    const vec3& latticeOrigin
 )
 {
     const std::string type = dict.getWord("shape", types());
@@ -74,10 +79,33 @@ std::unique_ptr<shape> shape::New
         check(cylinderShape::keywords());
         return std::make_unique<cylinderShape>(name, dict, nDimensions);
     }
+    if (type == "polygon")
+    {
+        check(polygonShape::keywords());
+        return std::make_unique<polygonShape>(name, dict, nDimensions);
+    }
+    if (type == "stl" && nDimensions == 2)
+    {
+        check(stlShape::keywords());
+        return std::make_unique<stlSliceShape>(name, dict, nDimensions,
+                                               caseDir);
+    }
     if (type == "stl")
     {
         check(stlShape::keywords());
         return std::make_unique<stlShape>(name, dict, nDimensions, caseDir);
+    }
+    if (type == "seedFill")
+    {
+        check(seedFillShape::keywords());
+        return std::make_unique<seedFillShape>(name, dict, nDimensions, dp,
+                                               latticeOrigin, caseDir);
+    }
+    if (type == "surfaceLayers")
+    {
+        check(surfaceLayersShape::keywords());
+        return std::make_unique<surfaceLayersShape>(name, dict, nDimensions,
+                                                    dp, caseDir);
     }
     check(containerShape::keywords());
     return std::make_unique<containerShape>(name, dict, nDimensions, dp);

@@ -50,43 +50,25 @@ scalar stlDetail::defaultMergeDistance(const std::vector<vec3>& points)
 }
 
 
-// * * * * * * * * * * * * * * * Constructors * * * * * * * * * * * * * * * //
+std::vector<std::string> stlDetail::surfaceKeywords()
+{
+    return {"file", "scale", "rotate", "translate", "mergeDistance",
+            "checkClosed"};
+}
 
-stlShape::stlShape
+
+void stlDetail::rethrowForShape
 (
-    std::string name,
-    const std::vector<vec3>& soup,
-    const std::string& source,
-    scalar mergeDistance,
-    bool checkClosed
+    const FatalError& err,
+    const std::string& name,
+    const dictionary& dict
 )
-:
-    stlShape
-    (
-        std::move(name),
-        input{soup, source, mergeDistance, checkClosed}
-    )
-{}
-
-
-stlShape::stlShape
-(
-    std::string name,
-    const dictionary& dict,
-    int nDimensions,
-    const std::filesystem::path& caseDir
-)
-try
-:
-    stlShape(name, read(name, dict, nDimensions, caseDir))
-{}
-catch (const FatalError& err)
 {
     // An error in the surface file: say where the dictionary asked for
     // it, then what is wrong (errors in the dictionary itself name it).
     if (err.file() == dict.file())
     {
-        throw;
+        throw err;
     }
     std::string message = err.message();
     const std::string own = "Shape '" + name + "': ";
@@ -101,45 +83,14 @@ catch (const FatalError& err)
 }
 
 
-stlShape::stlShape(std::string name, input in)
-:
-    shape(std::move(name), 3),
-    source_(in.source),
-    surface_
-    (
-        in.soup,
-        in.mergeDistance < 0
-      ? stlDetail::defaultMergeDistance(in.soup)
-      : in.mergeDistance
-    ),
-    inside_(surface_),
-    volume_(-1)
-{
-    check(in.checkClosed, in.mergeDistance < 0
-        ? stlDetail::defaultMergeDistance(in.soup) : in.mergeDistance);
-    if (surface_.closed())
-    {
-        volume_ = std::abs(surface_.volume());
-    }
-}
-
-
-stlShape::input stlShape::read
+stlDetail::surfaceInput stlDetail::readSurface
 (
     const std::string& name,
     const dictionary& dict,
-    int nDimensions,
     const std::filesystem::path& caseDir
 )
 {
-    if (nDimensions != 3)
-    {
-        dict.fatalAt("shape", "Shape '" + name + "': shape stl fills a closed"
-            " 3D surface and needs nDimensions 3 (2D bodies cut from an STL"
-            " are not available yet)");
-    }
-
-    input in;
+    surfaceInput in;
     const std::filesystem::path file = dict.get<std::string>("file");
     const std::filesystem::path path =
         file.is_absolute() || caseDir.empty() ? file : caseDir/file;
@@ -205,14 +156,18 @@ stlShape::input stlShape::read
 }
 
 
-// * * * * * * * * * * * * * * * Private Members * * * * * * * * * * * * * //
-
-void stlShape::check(bool checkClosed, scalar mergeDistance) const
+void stlDetail::checkRepairs
+(
+    const triSurface& surface,
+    const std::string& name,
+    const std::string& source,
+    scalar mergeDistance
+)
 {
-    const triSurface::repairs& r = surface_.repaired();
-    if (surface_.size() == 0)
+    const triSurface::repairs& r = surface.repaired();
+    if (surface.size() == 0)
     {
-        fatalIOError(source_, 0, "Shape '" + name_ + "': no triangle of the"
+        fatalIOError(source, 0, "Shape '" + name + "': no triangle of the"
             " surface is left after dropping " + std::to_string(r.nDegenerate)
           + " degenerate and " + std::to_string(r.nDuplicate) + " coincident"
             " ones");
@@ -220,14 +175,100 @@ void stlShape::check(bool checkClosed, scalar mergeDistance) const
     if (r.nMergedPoints || r.nDegenerate || r.nDuplicate)
     {
         std::ostringstream os;
-        os << "Shape '" << name_ << "': repaired the surface: "
+        os << "Shape '" << name << "': repaired the surface: "
            << r.nMergedPoints << " vertices merged (closer than "
            << mergeDistance << " m), " << r.nDegenerate << " degenerate"
            << " triangles dropped, " << r.nDuplicate << " coincident"
-           << " triangles dropped in pairs; " << surface_.size()
+           << " triangles dropped in pairs; " << surface.size()
            << " triangles left";
-        warning(os.str(), source_);
+        warning(os.str(), source);
     }
+}
+
+
+// * * * * * * * * * * * * * * * Constructors * * * * * * * * * * * * * * * //
+
+stlShape::stlShape
+(
+    std::string name,
+    const std::vector<vec3>& soup,
+    const std::string& source,
+    scalar mergeDistance,
+    bool checkClosed
+)
+:
+    stlShape
+    (
+        std::move(name),
+        input{soup, source, mergeDistance, checkClosed}
+    )
+{}
+
+
+stlShape::stlShape
+(
+    std::string name,
+    const dictionary& dict,
+    int nDimensions,
+    const std::filesystem::path& caseDir
+)
+try
+:
+    stlShape(name, read(name, dict, nDimensions, caseDir))
+{}
+catch (const FatalError& err)
+{
+    stlDetail::rethrowForShape(err, name, dict);
+}
+
+
+stlShape::stlShape(std::string name, input in)
+:
+    shape(std::move(name), 3),
+    source_(in.source),
+    surface_
+    (
+        in.soup,
+        in.mergeDistance < 0
+      ? stlDetail::defaultMergeDistance(in.soup)
+      : in.mergeDistance
+    ),
+    inside_(surface_),
+    volume_(-1)
+{
+    check(in.checkClosed, in.mergeDistance < 0
+        ? stlDetail::defaultMergeDistance(in.soup) : in.mergeDistance);
+    if (surface_.closed())
+    {
+        volume_ = std::abs(surface_.volume());
+    }
+}
+
+
+stlShape::input stlShape::read
+(
+    const std::string& name,
+    const dictionary& dict,
+    int nDimensions,
+    const std::filesystem::path& caseDir
+)
+{
+    if (nDimensions != 3)
+    {
+        dict.fatalAt("shape", "Shape '" + name + "': this is the 3D stl"
+            " shape; in 2D, shape::New builds the cut of the surface by"
+            " z = 0 (stlSliceShape)");
+    }
+
+    return stlDetail::readSurface(name, dict, caseDir);
+}
+
+
+// * * * * * * * * * * * * * * * Private Members * * * * * * * * * * * * * //
+
+void stlShape::check(bool checkClosed, scalar mergeDistance) const
+{
+    stlDetail::checkRepairs(surface_, name_, source_, mergeDistance);
 
     const std::vector<triSurface::edge>& open = surface_.openEdges();
     if (open.empty())

@@ -431,7 +431,8 @@ std::vector<badCase> badCases()
          "found -0.01"}},
         {"unknownShape", replaced(d, "shape sphere", "shape ball"),
          where::dict, "hole", {"Keyword 'shape'", "unknown value 'ball'",
-         "(box container cylinder sphere stl)"}},
+         "(box container cylinder polygon seedFill sphere stl"
+         " surfaceLayers)"}},
         {"unknownBodyType", replaced(d, "type        fluid;",
          "type        liquid;"), where::dict, "liquid",
          {"Keyword 'type'", "unknown value 'liquid'", "(fluid solid wall)"}},

@@ -210,7 +210,8 @@ TEST(shapes, dictionaryErrors)
     {
         fromText("\nshape cube; min (0 0 0); max (1 1 1);", 3);
     }), file, 2, {"'shape'", "unknown value 'cube'",
-                  "box container cylinder sphere stl"});
+                  "box container cylinder polygon seedFill sphere stl"
+                  " surfaceLayers"});
 
     expectError(catchFatal([&]
     {

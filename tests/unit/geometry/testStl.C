@@ -241,9 +241,11 @@ TEST(stl, badFilesThroughTheShape)
     writeFile(dir.path()/"cube.stl", bytes);
     err = catchFatal([&]()
     {
-        stlFromText("shape stl; file cube.stl;", dir.path(), 2);
+        stlFromText("shape stl; file cube.stl; translate (0 0 1);",
+                    dir.path(), 2);
     });
-    expectError(err, dict.string(), 1, {"nDimensions 3"});
+    expectError(err, (dir.path()/"cube.stl").string(), 0,
+                {"Shape 's'", dict.string(), "z = 0 does not cut"});
     err = catchFatal([&]()
     {
         stlFromText("shape stl; file cube.stl; scal 2;", dir.path());
