@@ -1,0 +1,147 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "bondList.H"
+
+#include "error.H"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+namespace sphvcpm
+{
+
+namespace
+{
+
+// 21 bits per cell coordinate: 2 million cells a side is far beyond any
+// solid body of this code.
+std::int64_t cellKey(const std::int64_t a, const std::int64_t b,
+                     const std::int64_t c)
+{
+    const std::int64_t bias = 1 << 20;
+    return ((a + bias) << 42) | ((b + bias) << 21) | (c + bias);
+}
+
+} // End anonymous namespace
+
+
+bondList::bondList(const std::vector<vec3>& X, const scalar l0)
+{
+    const label n = label(X.size());
+    const scalar cut1 = 1.01*l0;
+    const scalar cut2 = 1.01*std::sqrt(2.0)*l0;
+    if (!(l0 > 0))
+    {
+        throw FatalError("VCPM bond list: particle spacing must be positive",
+                         "", 0, "dp");
+    }
+
+    // Cell linked list in a hash: cells of side cut2, so every bond joins
+    // the same or adjacent cells.
+    vec3 lo = n ? X[0] : vec3{0, 0, 0};
+    for (const vec3& p : X)
+    {
+        lo.x = std::min(lo.x, p.x);
+        lo.y = std::min(lo.y, p.y);
+        lo.z = std::min(lo.z, p.z);
+    }
+    std::vector<std::int64_t> cell(3*std::size_t(n));
+    std::unordered_map<std::int64_t, label> head;
+    head.reserve(2*std::size_t(n));
+    std::vector<label> next(n, -1);
+    for (label p = 0; p < n; ++p)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            cell[3*p + d] = std::int64_t(std::floor((X[p][d] - lo[d])/cut2));
+        }
+        const std::int64_t key = cellKey(cell[3*p], cell[3*p + 1], cell[3*p + 2]);
+        auto it = head.find(key);
+        if (it != head.end())
+        {
+            next[p] = it->second;
+            it->second = p;
+        }
+        else
+        {
+            head.emplace(key, p);
+        }
+    }
+
+    std::vector<label> count(n, 0);
+    std::vector<label> found;
+    for (label i = 0; i < n; ++i)
+    {
+        found.clear();
+        for (int a = -1; a <= 1; ++a)
+        for (int b = -1; b <= 1; ++b)
+        for (int c = -1; c <= 1; ++c)
+        {
+            auto it = head.find
+            (
+                cellKey(cell[3*i] + a, cell[3*i + 1] + b, cell[3*i + 2] + c)
+            );
+            if (it == head.end()) continue;
+            for (label j = it->second; j >= 0; j = next[j])
+            {
+                if (j > i) found.push_back(j);
+            }
+        }
+        // Sorted so that the list does not depend on the hash order.
+        std::sort(found.begin(), found.end());
+        for (const label j : found)
+        {
+            const scalar r = mag(X[j] - X[i]);
+            if (r < 0.5*l0)
+            {
+                std::ostringstream os;
+                os << "VCPM bond list: particles " << i << " and " << j
+                   << " are " << r << " apart, less than dp/2 = " << 0.5*l0
+                   << ": the solid is not a lattice of spacing dp";
+                throw FatalError(os.str(), "", 0, "dp");
+            }
+            if (r >= cut2) continue;
+            first_.push_back(i);
+            second_.push_back(j);
+            layer_.push_back(r < cut1 ? 0 : 1);
+            length_.push_back(r);
+            ++count[i];
+            ++count[j];
+        }
+    }
+
+    // CSR adjacency; bonds of a particle in increasing bond order.
+    start_.assign(n + 1, 0);
+    for (label p = 0; p < n; ++p)
+    {
+        start_[p + 1] = start_[p] + count[p];
+    }
+    adjacency_.resize(start_[n]);
+    std::vector<label> fill(start_.begin(), start_.end() - 1);
+    for (label b = 0; b < nBonds(); ++b)
+    {
+        adjacency_[fill[first_[b]]++] = b;
+        adjacency_[fill[second_[b]]++] = b;
+    }
+
+    for (label p = 0; p < n; ++p)
+    {
+        if (nBondsOf(p, 1) == 0) withoutSecondLayer_.push_back(p);
+    }
+}
+
+
+label bondList::nBondsOf(const label p, const int layer) const
+{
+    label c = 0;
+    for (label a = start_[p]; a < start_[p + 1]; ++a)
+    {
+        c += layer_[adjacency_[a]] == layer;
+    }
+    return c;
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,523 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The VCPM solid against analysis (theory.md §2): constants and bad input,
+// bond counts, force = -dU/dx by finite differences, momentum conservation,
+// rigid rotation, the affine patch test (energy and virial stress equal
+// their continuum values for each admissible nu), serial = OpenMP, and
+// bounded energy at the stable time step, and a clamped column relaxed
+// under gravity with damping.
+
+#include "error.H"
+#include "vcpmSolid.H"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+using namespace sphvcpm;
+
+namespace
+{
+
+// * * * * * * * * * * * * * * * * Helpers  * * * * * * * * * * * * * * * * //
+
+std::vector<vec3> block(const int nx, const int ny, const int nz,
+                        const scalar l0)
+{
+    std::vector<vec3> X;
+    for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+    {
+        X.push_back({i*l0, j*l0, k*l0});
+    }
+    return X;
+}
+
+void perturb(std::vector<vec3>& x, const scalar amplitude, const int nDim,
+             const unsigned seed)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<scalar> u(-amplitude, amplitude);
+    for (vec3& p : x)
+    {
+        p.x += u(gen);
+        p.y += u(gen);
+        if (nDim == 3) p.z += u(gen);
+    }
+}
+
+// A solid of nx x ny (x nz) particles, spacing l0.
+vcpmSolid makeSolid(const vcpmMaterial& m, const int nx, const int ny,
+                    const int nz)
+{
+    return vcpmSolid(m, block(nx, ny, m.nDim() == 3 ? nz : 1, m.l0));
+}
+
+vcpmMaterial material(const vcpmLattice lattice, const planeModel plane,
+                      const scalar nu, const scalar l0 = 0.01)
+{
+    return vcpmMaterial(2e6, nu, 1100, lattice, l0, plane, 0.1);
+}
+
+const vcpmLattice sq = vcpmLattice::square2D;
+const vcpmLattice sc = vcpmLattice::simpleCubic3D;
+const planeModel pStress = planeModel::planeStress;
+const planeModel pStrain = planeModel::planeStrain;
+
+scalar maxMag(const std::vector<vec3>& f)
+{
+    scalar m = 0;
+    for (const vec3& v : f) m = std::max(m, mag(v));
+    return m;
+}
+
+// Continuum stress C:eps of the material (2D: the in-plane components).
+stressTensor hooke(const vcpmMaterial& m, const scalar e[3][3])
+{
+    const scalar mu = m.E/(2*(1 + m.nu));
+    scalar lambda = m.E*m.nu/((1 + m.nu)*(1 - 2*m.nu));
+    scalar tr = e[0][0] + e[1][1] + e[2][2];
+    if (m.nDim() == 2)
+    {
+        tr = e[0][0] + e[1][1];
+        if (m.plane == pStress) lambda = m.E*m.nu/(1 - m.nu*m.nu);
+    }
+    stressTensor s{lambda*tr + 2*mu*e[0][0], 2*mu*e[0][1], 2*mu*e[0][2],
+                   lambda*tr + 2*mu*e[1][1], 2*mu*e[1][2],
+                   lambda*tr + 2*mu*e[2][2]};
+    if (m.nDim() == 2)
+    {
+        s.xz = s.yz = s.zz = 0;
+    }
+    return s;
+}
+
+scalar maxAbs(const stressTensor& s)
+{
+    return std::max({std::abs(s.xx), std::abs(s.xy), std::abs(s.xz),
+                     std::abs(s.yy), std::abs(s.yz), std::abs(s.zz)});
+}
+
+stressTensor minus(const stressTensor& a, const stressTensor& b)
+{
+    return {a.xx - b.xx, a.xy - b.xy, a.xz - b.xz,
+            a.yy - b.yy, a.yz - b.yz, a.zz - b.zz};
+}
+
+// Particles at least two lattice steps from every face: their bonds and
+// their partners' bonds are complete.
+std::vector<label> interior(const vcpmSolid& s)
+{
+    vec3 lo = s.reference()[0], hi = lo;
+    for (const vec3& p : s.reference())
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            lo[d] = std::min(lo[d], p[d]);
+            hi[d] = std::max(hi[d], p[d]);
+        }
+    }
+    const scalar l0 = s.material().l0;
+    std::vector<label> in;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        bool deep = true;
+        for (int d = 0; d < s.material().nDim(); ++d)
+        {
+            const vec3& X = s.reference()[p];
+            deep = deep && X[d] > lo[d] + 1.5*l0 && X[d] < hi[d] - 1.5*l0;
+        }
+        if (deep) in.push_back(p);
+    }
+    return in;
+}
+
+struct latticeCase
+{
+    vcpmLattice lattice;
+    planeModel plane;
+    scalar nu;
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Material * * * * * * * * * * * * * * * * //
+
+TEST(vcpmMaterial, closedFormsMatchCubicMapping)
+{
+    // §2.4: k1 = (C11 - C12)/2, k2 = C44/2, T = (C12 - C44)/12 (square,
+    // times t); R (C11 - C12 - C44), R C44, R (C12 - C44)/18 (SC).
+    for (const scalar nu : {-0.3, 0.0, 0.25, 0.3, 0.45, 0.49})
+    {
+        for (const planeModel pl : {pStress, pStrain})
+        {
+            const vcpmMaterial m = material(sq, pl, nu);
+            const scalar t = m.thickness;
+            EXPECT_NEAR(m.k1, t*(m.C11 - m.C12)/2, 1e-12*m.k1);
+            EXPECT_NEAR(m.k2, t*m.C44/2, 1e-12*m.k2);
+            EXPECT_NEAR(m.T, t*(m.C12 - m.C44)/12, 1e-12*m.k1);
+        }
+        const vcpmMaterial m = material(sc, pStrain, nu);
+        const scalar R = m.l0/2;
+        EXPECT_NEAR(m.k1, R*(m.C11 - m.C12 - m.C44), 1e-12*m.k1);
+        EXPECT_NEAR(m.k2, R*m.C44, 1e-12*m.k2);
+        EXPECT_NEAR(m.T, R*(m.C12 - m.C44)/18, 1e-12*m.k1);
+    }
+}
+
+TEST(vcpmMaterial, stableStepAndMass)
+{
+    const vcpmMaterial m = material(sc, pStrain, 0.3);
+    EXPECT_DOUBLE_EQ(m.mass, 1100*1e-6);
+    const scalar cp = std::sqrt(m.E*0.7/(1.3*0.4*1100));
+    EXPECT_NEAR(m.stableTimeStep(), 0.5*0.01/cp, 1e-15);
+    const vcpmMaterial p = material(sq, pStress, 0.3);
+    EXPECT_NEAR(p.pWaveSpeed, std::sqrt(2e6/(1 - 0.09)/1100), 1e-12);
+    EXPECT_DOUBLE_EQ(p.mass, 1100*1e-4*0.1);
+}
+
+TEST(vcpmMaterial, badInputNamesTheKeyword)
+{
+    auto keywordOf = [](auto make) -> std::string
+    {
+        try { make(); }
+        catch (const FatalError& e) { return e.keyword(); }
+        return "none";
+    };
+    EXPECT_EQ(keywordOf([]{ material(sc, pStrain, 0.5); }), "nu");
+    EXPECT_EQ(keywordOf([]{ material(sc, pStrain, -0.5); }), "nu");
+    EXPECT_EQ(keywordOf([]{ material(sq, pStrain, 0.55); }), "nu");
+    EXPECT_EQ(keywordOf([]{ material(sq, pStress, -0.4); }), "nu");
+    EXPECT_EQ(keywordOf([]{ material(sq, pStress, -0.3); }), "none");
+    EXPECT_EQ(keywordOf([]{ material(sc, pStrain, -0.45); }), "none");
+    EXPECT_EQ(keywordOf([]{ vcpmMaterial(0, 0.3, 1000, sc, 0.01); }), "E");
+    EXPECT_EQ(keywordOf([]{ vcpmMaterial(1e6, 0.3, -1, sc, 0.01); }), "rho");
+    EXPECT_EQ(keywordOf([]{ vcpmMaterial(1e6, 0.3, 1, sc, 0); }), "dp");
+    EXPECT_EQ(keywordOf([]{ vcpmMaterial::latticeNamed("hex"); }), "lattice");
+}
+
+
+// * * * * * * * * * * * * * * * * Bond list  * * * * * * * * * * * * * * * //
+
+TEST(vcpmBondList, countsPerLayer)
+{
+    const scalar l0 = 0.01;
+    const bondList b3(block(5, 5, 5, l0), l0);
+    const label centre = 2 + 5*2 + 25*2;
+    EXPECT_EQ(b3.nBondsOf(centre, 0), 6);
+    EXPECT_EQ(b3.nBondsOf(centre, 1), 12);
+    EXPECT_EQ(b3.nBondsOf(0, 0), 3);
+    EXPECT_EQ(b3.nBondsOf(0, 1), 3);
+    // 3 axes x 4 x 5 x 5 layer-1; 3 planes x 2 diagonals x 4 x 4 x 5 layer-2.
+    EXPECT_EQ(b3.nBonds(), 300 + 480);
+    EXPECT_TRUE(b3.withoutSecondLayer().empty());
+
+    const bondList b2(block(4, 3, 1, l0), l0);
+    EXPECT_EQ(b2.nBondsOf(1 + 4, 0), 4);
+    EXPECT_EQ(b2.nBondsOf(1 + 4, 1), 4);
+    EXPECT_EQ(b2.nBonds(), (3*3 + 4*2) + 2*3*2);
+    for (label k = 0; k < b2.nBonds(); ++k)
+    {
+        EXPECT_LT(b2.first()[k], b2.second()[k]);
+    }
+
+    // A single row has no diagonals: too thin.
+    const bondList row(block(6, 1, 1, l0), l0);
+    EXPECT_EQ(label(row.withoutSecondLayer().size()), 6);
+}
+
+TEST(vcpmBondList, rejectsOverlappingParticles)
+{
+    std::vector<vec3> X = block(3, 3, 1, 0.01);
+    X.push_back({0.001, 0, 0});
+    EXPECT_THROW(bondList(X, 0.01), FatalError);
+}
+
+
+// * * * * * * * * * * * * * * * * * Forces * * * * * * * * * * * * * * * * //
+
+class vcpmLatticeCases : public ::testing::TestWithParam<latticeCase> {};
+
+TEST_P(vcpmLatticeCases, forceIsMinusEnergyGradient)
+{
+    const latticeCase c = GetParam();
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    vcpmSolid s = makeSolid(m, 5, 4, 4);
+    perturb(s.position, 0.05*m.l0, m.nDim(), 7);
+    s.computeForces(serialExec{});
+    const std::vector<vec3> f = s.force;
+
+    const scalar h = 1e-6*m.l0;
+    scalar maxErr = 0;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        for (int d = 0; d < m.nDim(); ++d)
+        {
+            const scalar x0 = s.position[p][d];
+            s.position[p][d] = x0 + h;
+            const scalar Up = s.elasticEnergy(serialExec{});
+            s.position[p][d] = x0 - h;
+            const scalar Um = s.elasticEnergy(serialExec{});
+            s.position[p][d] = x0;
+            maxErr = std::max(maxErr, std::abs(-(Up - Um)/(2*h) - f[p][d]));
+        }
+    }
+    const scalar rel = maxErr/maxMag(f);
+    std::printf("force vs -dU/dx: max relative error %.2e\n", rel);
+    EXPECT_LT(rel, 1e-8);
+}
+
+TEST_P(vcpmLatticeCases, momentumConserved)
+{
+    const latticeCase c = GetParam();
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    vcpmSolid s = makeSolid(m, 6, 5, 4);
+    perturb(s.position, 0.05*m.l0, m.nDim(), 11);
+    s.computeForces(openmpExec{});
+    vec3 F{0, 0, 0}, M{0, 0, 0};
+    scalar scaleF = 0, scaleM = 0;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        F += s.force[p];
+        M += cross(s.position[p], s.force[p]);
+        scaleF += mag(s.force[p]);
+        scaleM += mag(s.position[p])*mag(s.force[p]);
+    }
+    std::printf("|sum f|/sum|f| = %.1e, |sum x x f|/sum|x||f| = %.1e\n",
+                mag(F)/scaleF, mag(M)/scaleM);
+    EXPECT_LT(mag(F), 1e-14*scaleF);
+    EXPECT_LT(mag(M), 1e-14*scaleM);
+}
+
+TEST_P(vcpmLatticeCases, rigidRotationIsStressFree)
+{
+    const latticeCase c = GetParam();
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    vcpmSolid s = makeSolid(m, 5, 4, 4);
+    // 90 degrees about z (2D) or about (1, 1, 1)/sqrt(3) (3D), plus a shift.
+    for (vec3& x : s.position)
+    {
+        if (m.nDim() == 2) x = vec3{-x.y, x.x, 0} + vec3{0.3, -0.2, 0};
+        else
+        {
+            const vec3 n{1/std::sqrt(3.0), 1/std::sqrt(3.0), 1/std::sqrt(3.0)};
+            x = dot(n, x)*n + cross(n, x) + vec3{0.3, -0.2, 0.1};
+        }
+    }
+    s.computeForces(serialExec{});
+    std::vector<stressTensor> sigma;
+    s.stress(serialExec{}, sigma);
+    scalar maxS = 0;
+    for (const stressTensor& t : sigma) maxS = std::max(maxS, maxAbs(t));
+    // Scales: the force of a 1 % bond strain, the stress E.
+    std::printf("rotation: max|f|/(k1 l0) = %.1e, max|sigma|/E = %.1e\n",
+                maxMag(s.force)/(m.k1*m.l0), maxS/m.E);
+    EXPECT_LT(maxMag(s.force), 1e-10*m.k1*m.l0);
+    EXPECT_LT(maxS, 1e-10*m.E);
+}
+
+TEST_P(vcpmLatticeCases, serialEqualsOpenMP)
+{
+    const latticeCase c = GetParam();
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    vcpmSolid a = makeSolid(m, 9, 8, 7);
+    perturb(a.position, 0.02*m.l0, m.nDim(), 3);
+    vcpmSolid b = a;
+    a.computeForces(serialExec{});
+    b.computeForces(openmpExec{});
+    for (label p = 0; p < a.size(); ++p)
+    {
+        ASSERT_EQ(a.force[p], b.force[p]);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Patch test * * * * * * * * * * * * * * * * //
+
+// Affine strain of the whole block: every interior particle has the energy
+// density 1/2 eps:C:eps and the virial stress C:eps (§2.4, §2.10).
+TEST_P(vcpmLatticeCases, affineStrainGivesContinuumStressAndEnergy)
+{
+    const latticeCase c = GetParam();
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    vcpmSolid s = makeSolid(m, 7, 7, 7);
+    const scalar a = 1e-8;
+    scalar e[3][3] = {{3*a, 1.5*a, -a}, {1.5*a, -2*a, 0.5*a}, {-a, 0.5*a, a}};
+    if (m.nDim() == 2)
+    {
+        e[0][2] = e[1][2] = e[2][0] = e[2][1] = e[2][2] = 0;
+    }
+    for (label p = 0; p < s.size(); ++p)
+    {
+        const vec3 X = s.reference()[p];
+        for (int i = 0; i < 3; ++i)
+        {
+            s.position[p][i] = X[i] + e[i][0]*X.x + e[i][1]*X.y + e[i][2]*X.z;
+        }
+    }
+    std::vector<stressTensor> sigma;
+    s.stress(serialExec{}, sigma);
+    const stressTensor exact = hooke(m, e);
+    const elasticEnergyOp energy{s.bonds().view(), s.constants(),
+                                 s.position.data(), s.stretchSum.data()};
+    scalar W = 0;    // 1/2 sigma:eps
+    W += 0.5*(exact.xx*e[0][0] + exact.yy*e[1][1] + exact.zz*e[2][2]);
+    W += exact.xy*e[0][1] + exact.xz*e[0][2] + exact.yz*e[1][2];
+
+    scalar errS = 0, errW = 0;
+    const std::vector<label> in = interior(s);
+    ASSERT_FALSE(in.empty());
+    for (const label p : in)
+    {
+        errS = std::max(errS, maxAbs(minus(sigma[p], exact))/maxAbs(exact));
+        errW = std::max(errW, std::abs(energy(p)/m.cellVolume - W)/W);
+    }
+    std::printf("affine strain nu = %g: stress error %.1e, energy error %.1e\n",
+                c.nu, errS, errW);
+    EXPECT_LT(errS, 1e-6);
+    EXPECT_LT(errW, 1e-6);
+}
+
+// Uniaxial stress as an affine state: the lateral strain -nu eps (3D, plane
+// stress) or -nu/(1 - nu) eps (plane strain) leaves the lateral stresses
+// zero and sigma_xx = E' eps, E' = E or E/(1 - nu^2).
+TEST_P(vcpmLatticeCases, uniaxialStressPoissonContraction)
+{
+    const latticeCase c = GetParam();
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    vcpmSolid s = makeSolid(m, 7, 7, 7);
+    const scalar eps = 1e-8;
+    const bool strain2D = m.nDim() == 2 && m.plane == pStrain;
+    const scalar lateral = strain2D ? -m.nu/(1 - m.nu)*eps : -m.nu*eps;
+    const scalar Eeff = strain2D ? m.E/(1 - m.nu*m.nu) : m.E;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        const vec3 X = s.reference()[p];
+        s.position[p] = {X.x*(1 + eps), X.y*(1 + lateral),
+                         X.z*(1 + (m.nDim() == 3 ? lateral : 0))};
+    }
+    std::vector<stressTensor> sigma;
+    s.stress(serialExec{}, sigma);
+    scalar errAxial = 0, errLateral = 0;
+    for (const label p : interior(s))
+    {
+        errAxial = std::max(errAxial, std::abs(sigma[p].xx/(Eeff*eps) - 1));
+        errLateral = std::max({errLateral, std::abs(sigma[p].yy/sigma[p].xx),
+                               std::abs(sigma[p].zz/sigma[p].xx)});
+    }
+    std::printf("uniaxial nu = %g: sigma_xx error %.1e, lateral/axial %.1e\n",
+                c.nu, errAxial, errLateral);
+    EXPECT_LT(errAxial, 1e-6);
+    EXPECT_LT(errLateral, 1e-6);
+}
+
+
+// * * * * * * * * * * * * * * * Time stepping  * * * * * * * * * * * * * * //
+
+// A free block, randomly displaced, run 2000 undamped steps at the formula's
+// step. The plain energy K + U of velocity Verlet oscillates (by about 15 %
+// here, the random start excites the highest modes); the quantity the scheme
+// conserves on a linear system is H = K + U - dt^2/8 sum |f|^2/m, which
+// must not move by more than 1e-6 (strains of 1e-6 keep the geometric
+// nonlinearity below that).
+TEST_P(vcpmLatticeCases, energyBoundedAtStableStep)
+{
+    const latticeCase c = GetParam();
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    vcpmSolid s = makeSolid(m, 8, 6, 5);
+    perturb(s.position, 1e-6*m.l0, m.nDim(), 5);
+    const scalar dt = m.stableTimeStep();
+    auto energies = [&](scalar& plain, scalar& shadow)
+    {
+        scalar f2 = 0;
+        for (const vec3& f : s.force) f2 += magSqr(f);
+        plain = s.kineticEnergy() + s.elasticEnergy(openmpExec{});
+        shadow = plain - dt*dt/(8*m.mass)*f2;
+    };
+    s.computeForces(openmpExec{});
+    scalar E0, H0;
+    energies(E0, H0);
+    scalar maxE = 0, maxH = 0;
+    for (int n = 1; n <= 2000; ++n)
+    {
+        s.step(openmpExec{}, dt);
+        scalar E, H;
+        energies(E, H);
+        maxE = std::max(maxE, std::abs(E - E0)/E0);
+        maxH = std::max(maxH, std::abs(H - H0)/H0);
+    }
+    std::printf("dt = %.3e: max |E - E0|/E0 = %.2e, max |H - H0|/H0 = %.2e\n",
+                dt, maxE, maxH);
+    EXPECT_LT(maxE, 0.25);
+    EXPECT_LT(maxH, 1e-6);
+}
+
+// Clamps, gravity and damping: a plane-strain column with nu = 0, its two
+// bottom layers clamped, relaxes under its own weight to the top
+// displacement of the discrete chain, rho g l0^2 N (N + 1)/(2 E) for N free
+// layers, within 1 % (measured -0.73 %: the free sides are slightly soft,
+// theory.md §2.8).
+TEST(vcpmSolid, dampedColumnUnderGravity)
+{
+    const vcpmMaterial m(1e6, 0.0, 1000, sq, 0.01, pStrain, 1);
+    vcpmSolid s(m, block(6, 22, 1, m.l0));
+    for (label p = 0; p < s.size(); ++p)
+    {
+        s.clamped[p] = s.reference()[p].y < 1.5*m.l0;
+    }
+    const int N = 20;
+    s.gravity = {0, -9.81, 0};
+    // About critical damping of the first mode, omega1 = pi c/(2 H).
+    const scalar H = N*m.l0;
+    s.damping = 2*M_PI*std::sqrt(m.E/m.rho)/(2*H);
+    const scalar dt = m.stableTimeStep(0.3);
+    s.computeForces(openmpExec{});
+    for (int n = 0; n < 20000; ++n)
+    {
+        s.step(openmpExec{}, dt);
+    }
+    scalar uTop = 0, maxV = 0;
+    label nTop = 0;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        maxV = std::max(maxV, mag(s.velocity[p]));
+        if (s.reference()[p].y > (N + 0.5)*m.l0)
+        {
+            uTop += s.position[p].y - s.reference()[p].y;
+            ++nTop;
+        }
+        if (s.clamped[p])
+        {
+            ASSERT_EQ(s.position[p], s.reference()[p]);
+        }
+    }
+    uTop /= nTop;
+    const scalar exact = -m.rho*9.81*m.l0*m.l0*N*(N + 1)/(2*m.E);
+    std::printf("column: u_top = %.5e, chain %.5e, error %.2e, max |v| %.1e\n",
+                uTop, exact, uTop/exact - 1, maxV);
+    EXPECT_NEAR(uTop/exact, 1, 0.01);
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    lattices, vcpmLatticeCases,
+    ::testing::Values
+    (
+        latticeCase{sc, pStrain, 0.0}, latticeCase{sc, pStrain, 0.25},
+        latticeCase{sc, pStrain, 0.3}, latticeCase{sc, pStrain, 0.45},
+        latticeCase{sc, pStrain, 0.49},
+        latticeCase{sq, pStrain, 0.0}, latticeCase{sq, pStrain, 0.25},
+        latticeCase{sq, pStrain, 0.3}, latticeCase{sq, pStrain, 0.45},
+        latticeCase{sq, pStrain, 0.49},
+        latticeCase{sq, pStress, 0.0}, latticeCase{sq, pStress, 0.25},
+        latticeCase{sq, pStress, 0.3}, latticeCase{sq, pStress, 0.45},
+        latticeCase{sq, pStress, 0.49}
+    )
+);
