@@ -9,6 +9,7 @@
 // under gravity with damping.
 
 #include "error.H"
+#include "vcpmBeam.H"
 #include "vcpmSolid.H"
 
 #include <gtest/gtest.h>
@@ -521,3 +522,98 @@ INSTANTIATE_TEST_SUITE_P
         latticeCase{sq, pStress, 0.49}
     )
 );
+
+
+// Static cantilever, STATIC_CANTILEVER.md set A in plane strain (the
+// reference's default for a 2D solid; the E' = E/(1 - nu^2) of Gray et al.):
+// L = 0.2, H = 0.02, E = 2 MPa, nu = 0.3975, self-weight at g = 0.0981, two
+// columns clamped in the support, relaxed with damping. At H/l0 = 5 (the
+// coarsest resolution the reference names, 0.8 s) the lattice is 18.7 % too
+// soft against Timoshenko: the surface effect of theory.md §2.8, not the
+// 3 % of issue 4, which needs about 24 layers (measured with
+// benchmarks/vcpmThinMembers, docs/vcpm.md: +3.37 % at 20, +2.63 % at 24,
+// +1.72 % at 32). So this checks the dynamic relaxation against that
+// measured value (the static CG solve of the benchmark gives the same
+// 2.94030e-4 m) and the error model against it.
+TEST(vcpmSolid, staticCantileverSetA)
+{
+    const scalar L = 0.2, H = 0.02, g = 0.0981, nu = 0.3975;
+    const int n = 5;
+    const scalar l0 = H/n;
+    const vcpmMaterial m(2e6, nu, 1000, sq, l0, pStrain, 1);
+    vcpmSolid s(m, cantileverLattice(label(std::lround(L/l0)), n, 2, l0));
+    for (label p = 0; p < s.size(); ++p)
+    {
+        s.clamped[p] = s.reference()[p].x < 0;
+    }
+    s.gravity = {0, -g, 0};
+
+    // Critical damping of the first bending mode.
+    const scalar Eb = m.E/(1 - nu*nu);
+    const scalar EI = Eb*H*H*H/12;
+    const scalar omega1 = 1.8751*1.8751/(L*L)*std::sqrt(EI/(m.rho*H));
+    s.damping = 2*omega1;
+    const scalar dt = m.stableTimeStep(0.5);
+    s.computeForces(openmpExec{});
+    scalar vMax = 0;
+    for (int it = 0; it < 200000; ++it)
+    {
+        s.step(openmpExec{}, dt);
+        if (it % 1000 == 999)
+        {
+            vMax = 0;
+            for (const vec3& v : s.velocity) vMax = std::max(vMax, mag(v));
+            if (vMax < 1e-9) break;
+        }
+    }
+    ASSERT_LT(vMax, 1e-9);
+
+    // Centreline deflection of the tip column, at its x = L - l0/2.
+    scalar w = 0;
+    label nTip = 0;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        if (s.reference()[p].x > L - l0)
+        {
+            w += s.position[p].y - s.reference()[p].y;
+            ++nTip;
+        }
+    }
+    w /= nTip;
+    const scalar q = -m.rho*g*H, x = L - 0.5*l0;
+    const scalar kGA = 5.0/6.0*m.E/(2*(1 + nu))*H;
+    const scalar wB = cantileverDeflection(x, L, q, EI, 0);
+    const scalar wT = cantileverDeflection(x, L, q, EI, kGA);
+
+    // The lattice's EI from the measured bending part, and the error model.
+    const scalar ratio = wB/(w - (wT - wB));
+    const scalar predicted = 1 + thinMemberStiffnessError(n, nu, pStrain);
+    const scalar wCorrected = wB/predicted + (wT - wB);
+    std::printf("cantilever n = %d: w = %.5e, Timoshenko %.5e (%+.2f %%), "
+                "EI ratio %.4f, predicted %.4f, w/(predicted) %+.2f %%\n",
+                n, w, wT, 100*(w/wT - 1), ratio, predicted,
+                100*(w/wCorrected - 1));
+    EXPECT_NEAR(w/wT - 1, 0.1866, 0.005);      // measured, not the issue's 3 %
+    EXPECT_NEAR(w/wCorrected, 1, 0.01);
+}
+
+// The error model: too soft, less so with more layers, and the minimum
+// layers for 5 % at nu = 0.3 in plane stress the table shows (n = 16:
+// EI ratio 0.944, n = 20: 0.956).
+TEST(vcpmSolid, thinMemberStiffnessError)
+{
+    scalar last = -1;
+    for (const int n : {2, 3, 4, 6, 8, 12, 16, 32})
+    {
+        const scalar e = thinMemberStiffnessError(n, 0.3, pStress);
+        EXPECT_LT(e, 0);
+        EXPECT_GT(e, last);
+        last = e;
+    }
+    EXPECT_NEAR(thinMemberStiffnessError(4, 0.3, pStress), 0.7632 - 1, 0.005);
+    EXPECT_NEAR(thinMemberStiffnessError(8, 0.0, pStress), 0.9517 - 1, 0.005);
+    EXPECT_EQ(thinMemberStiffnessError(1, 0.3, pStress), -1);
+    const label n5 = minimumLayers(0.05, 0.3, pStress);
+    EXPECT_GE(n5, 17);
+    EXPECT_LE(n5, 20);
+}
