@@ -1,0 +1,182 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The oscillating plate of Gray, Monaghan & Swift (2001),
+// OSCILLATING_PLATE.md: a cantilever L = 0.2, H = 0.02 (E = 2 MPa,
+// nu = 0.3975, rho = 1000, plane strain as the reference's K implies)
+// started from rest shape with the first-mode velocity profile
+// V_f c0 f(x/L), run undamped for ten periods. Checks the period of the
+// tip-centre deflection against Euler-Bernoulli and that the energy does
+// not grow.
+
+#include "vcpmBeam.H"
+#include "vcpmSolid.H"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+using namespace sphvcpm;
+
+namespace
+{
+
+// First cantilever mode shape, normalised to f(1) = 1 (the reference's
+// M, N, Q form).
+scalar firstMode(const scalar xi)
+{
+    const scalar kL = 1.875104;
+    const scalar M = std::sin(kL) + std::sinh(kL);
+    const scalar N = std::cos(kL) + std::cosh(kL);
+    const scalar Q = 2*(std::cos(kL)*std::sinh(kL) - std::sin(kL)*std::cosh(kL));
+    const scalar a = kL*xi;
+    return (M*(std::cos(a) - std::cosh(a)) - N*(std::sin(a) - std::sinh(a)))/Q;
+}
+
+struct plateResult
+{
+    scalar period;          // from the zero crossings of the tip deflection
+    label nCrossings;
+    scalar firstPeak;       // max |w| over the first period
+    scalar maxDriftPlain;   // max |E - E0|/E0, E = K + U
+    scalar maxDriftShadow;  // max |H - H0|/H0, H = E - dt^2/8 sum|f|^2/m
+    scalar growthLastFirst; // mean E over the last period / first - 1
+};
+
+// Runs nPeriods of the expected period Texp and measures.
+plateResult runPlate(const int nLayers, const scalar Vf, const scalar Texp,
+                     const scalar nPeriods)
+{
+    const scalar L = 0.2, H = 0.02, E = 2e6, nu = 0.3975, rho = 1000;
+    const scalar l0 = H/nLayers;
+    const vcpmMaterial m(E, nu, rho, vcpmLattice::square2D, l0,
+                         planeModel::planeStrain, 1);
+    // Two columns inside the support, clamped: the clamp carries moment.
+    vcpmSolid s(m, cantileverLattice(label(std::lround(L/l0)), nLayers, 2, l0));
+    const scalar c0 = std::sqrt(E/(3*(1 - 2*nu))/rho);
+    std::vector<label> tip;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        const vec3& X = s.reference()[p];
+        s.clamped[p] = X.x < 0;
+        if (X.x > 0) s.velocity[p].y = Vf*c0*firstMode(X.x/L);
+        if (X.x > L - l0) tip.push_back(p);
+    }
+
+    // The tip centre: the mean of the last column (its centreline).
+    auto tipDeflection = [&]()
+    {
+        scalar w = 0;
+        for (const label p : tip) w += s.position[p].y - s.reference()[p].y;
+        return w/tip.size();
+    };
+
+    const scalar dt = m.stableTimeStep(0.5);
+    s.computeForces(serialExec{});
+    auto energies = [&](scalar& plain, scalar& shadow)
+    {
+        // Free particles only: a clamped one's force is not in the dynamics.
+        scalar f2 = 0;
+        for (label p = 0; p < s.size(); ++p)
+        {
+            if (!s.clamped[p]) f2 += magSqr(s.force[p]);
+        }
+        plain = s.kineticEnergy() + s.elasticEnergy(serialExec{});
+        shadow = plain - dt*dt/(8*m.mass)*f2;
+    };
+    scalar E0, H0;
+    energies(E0, H0);
+
+    plateResult r{0, 0, 0, 0, 0, 0};
+    const long nSteps = std::lround(nPeriods*Texp/dt);
+    const long everyE = 20;
+    scalar firstCrossing = -1, lastCrossing = -1, wOld = 0, tOld = 0;
+    scalar sumFirst = 0, sumLast = 0;
+    label nFirst = 0, nLast = 0;
+    for (long it = 1; it <= nSteps; ++it)
+    {
+        s.step(serialExec{}, dt);
+        const scalar t = it*dt;
+        const scalar w = tipDeflection();
+        if (t < Texp) r.firstPeak = std::max(r.firstPeak, std::abs(w));
+        // Sign changes, linearly interpolated; a quarter period apart at
+        // least, so that ripples of the higher modes do not count.
+        if (wOld*w < 0)
+        {
+            const scalar tc = tOld + (t - tOld)*wOld/(wOld - w);
+            if (lastCrossing < 0 || tc - lastCrossing > 0.25*Texp)
+            {
+                if (firstCrossing < 0) firstCrossing = tc;
+                lastCrossing = tc;
+                ++r.nCrossings;
+            }
+        }
+        wOld = w;
+        tOld = t;
+
+        if (it % everyE == 0)
+        {
+            scalar En, Hn;
+            energies(En, Hn);
+            r.maxDriftPlain = std::max(r.maxDriftPlain, std::abs(En/E0 - 1));
+            r.maxDriftShadow = std::max(r.maxDriftShadow, std::abs(Hn/H0 - 1));
+            if (t < Texp) { sumFirst += En; ++nFirst; }
+            if (t > (nPeriods - 1)*Texp) { sumLast += En; ++nLast; }
+        }
+    }
+    if (r.nCrossings > 1)
+    {
+        r.period = 2*(lastCrossing - firstCrossing)/(r.nCrossings - 1);
+    }
+    r.growthLastFirst = (sumLast/nLast)/(sumFirst/nFirst) - 1;
+    return r;
+}
+
+} // End anonymous namespace
+
+
+// H/l0 = 8 layers (656 particles, 2 clamped columns, about 140,000 steps at
+// C_s = 0.5, 6 s on one core). The lattice bending stiffness is low by the
+// thin-member error of theory.md §2.8 (-9.2 % at 8 layers), so the period is
+// checked against the Euler-Bernoulli value times sqrt(EI/EI_lattice) from
+// thinMemberStiffnessError, not raw: the raw period is 6 % long here and
+// within 3 % only from about 16 layers (docs/vcpm.md), too slow for a unit
+// test. SPHVCPM_PLATE_LAYERS=n runs another resolution (the table).
+TEST(vcpmSolid, oscillatingPlate)
+{
+    const char* env = std::getenv("SPHVCPM_PLATE_LAYERS");
+    const int n = env ? std::atoi(env) : 8;
+    const scalar L = 0.2, H = 0.02, E = 2e6, nu = 0.3975, rho = 1000;
+    const scalar Vf = 0.001;     // tip amplitude about 2.3 mm: linear
+    const scalar kL = 1.875104;
+    const scalar EI = E/(1 - nu*nu)*H*H*H/12;
+    const scalar omega = kL*kL/(L*L)*std::sqrt(EI/(rho*H));
+    const scalar T = 2*M_PI/omega;
+    const scalar ratio = 1 + thinMemberStiffnessError(n, nu, planeModel::planeStrain);
+    const scalar Texp = T/std::sqrt(ratio);
+
+    const plateResult r = runPlate(n, Vf, Texp, 10.25);
+    const scalar c0 = std::sqrt(E/(3*(1 - 2*nu))/rho);
+    std::printf("oscillating plate n = %d: T = %.5f s (%d crossings), "
+                "Euler-Bernoulli %.5f (raw %+.2f %%), EI ratio %.4f -> "
+                "expected %.5f (%+.2f %%)\n",
+                n, r.period, int(r.nCrossings), T, 100*(r.period/T - 1),
+                ratio, Texp, 100*(r.period/Texp - 1));
+    std::printf("  first peak %.4e m, v0/omega %.4e, v0/omega_lattice %.4e; "
+                "energy: max|E/E0 - 1| %.2e, max|H/H0 - 1| %.2e, "
+                "last/first period mean E - 1 = %.2e\n",
+                r.firstPeak, Vf*c0/omega, Vf*c0/(omega*std::sqrt(ratio)),
+                r.maxDriftPlain, r.maxDriftShadow, r.growthLastFirst);
+    EXPECT_GE(r.nCrossings, 20);
+    EXPECT_NEAR(r.period/Texp, 1, 0.03);
+    // No damping: the Verlet-conserved H stays put (measured 4e-11 at n = 8;
+    // the geometric nonlinearity at A/L ~ 1 % is the rest), and the mean
+    // K + U of the last period is not above the first.
+    EXPECT_LT(r.maxDriftShadow, 1e-8);
+    EXPECT_LT(r.maxDriftPlain, 1e-4);
+    EXPECT_LT(r.growthLastFirst, 1e-6);
+}
