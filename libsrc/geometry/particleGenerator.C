@@ -7,7 +7,9 @@
 #include "containerShape.H"
 #include "error.H"
 #include "lattice.H"
+#include "latticeMembers.H"
 #include "pointLocator.H"
+#include "vcpmBeam.H"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +30,7 @@ const std::vector<std::string> topKeywords =
     {"nDimensions", "dp", "latticeOrigin", "bodies"};
 
 const std::vector<std::string> bodyKeywords =
-    {"type", "rho", "U", "latticeOrigin", "container", "shapes"};
+    {"type", "rho", "U", "latticeOrigin", "container", "shapes", "clamp"};
 
 // The generation order: what a later body must not overlap comes first.
 const bodyType buildOrder[] = {bodyType::solid, bodyType::wall,
@@ -132,7 +134,11 @@ void particleGenerator::readBody
         dict.getOrDefault<vec3>("latticeOrigin", origin),
         region(nDimensions_),
         e.file(),
-        e.line()
+        e.line(),
+        std::nullopt,   // clamp, read below
+        "",
+        0,
+        std::nullopt    // material, read below
     };
     if (nDimensions_ == 2 && spec.U.z != 0)
     {
@@ -162,6 +168,26 @@ void particleGenerator::readBody
                               spec.origin);
     }
 
+    if (dict.found("clamp"))
+    {
+        if (type != bodyType::solid)
+        {
+            dict.fatalAt("clamp", "Keyword 'clamp': body '" + name + "' is a "
+                + bodyTypeName(type) + "; only solids have clamps");
+        }
+        const entry& c = dict.lookupEntry("clamp");
+        if (!c.isDict())
+        {
+            dict.fatalAt("clamp", "Keyword 'clamp' of body '" + name + "': "
+                "expected shapes, e.g. clamp { support { shape box; min (..);"
+                " max (..); } }");
+        }
+        spec.clamp.emplace(nDimensions_);
+        spec.clamp->addShapes(c.dict(), dp_, caseDir_, spec.origin);
+        spec.clampFile = c.file();
+        spec.clampLine = c.line();
+    }
+
     if (dict.found("rho"))
     {
         spec.rho = dict.getDimensioned<scalar>("rho", dimensions::density());
@@ -174,6 +200,14 @@ void particleGenerator::readBody
     else
     {
         spec.rho = defaultRho(e, type);
+    }
+
+    if (type == bodyType::solid)
+    {
+        if (const dictionary* props = solidPropertiesOf(name))
+        {
+            readMaterial(spec, *props);
+        }
     }
 
     specs_.push_back(std::move(spec));
@@ -236,6 +270,158 @@ scalar particleGenerator::defaultRho
             + "' must be positive, found " + shapeDetail::str(rho));
     }
     return rho;
+}
+
+
+const dictionary* particleGenerator::solidPropertiesOf(const std::string& name)
+{
+    if (!solidProperties_)
+    {
+        const fs::path file = caseDir_/"constant"/"solidProperties";
+        if (!fs::is_regular_file(file))
+        {
+            return nullptr;
+        }
+        solidProperties_ = dictionary::fromFile(file);
+    }
+    return solidProperties_->findDict(name);
+}
+
+
+void particleGenerator::readMaterial
+(
+    bodySpec& spec,
+    const dictionary& props
+)
+{
+    const std::string expected = nDimensions_ == 2 ? "square2D"
+                                                   : "simpleCubic3D";
+    const std::string latticeName =
+        props.getWordOrDefault("lattice", {"simpleCubic3D", "square2D"},
+                               expected);
+    if (latticeName != expected)
+    {
+        props.fatalAt("lattice", "Keyword 'lattice': solid '" + spec.name
+            + "' is " + std::to_string(nDimensions_) + "D (nDimensions of "
+            + dictFile_.string() + "), which needs lattice " + expected
+            + ", not " + latticeName);
+    }
+    if (nDimensions_ == 3 && props.found("plane"))
+    {
+        props.fatalAt("plane", "Keyword 'plane': solid '" + spec.name
+            + "' is 3D; planeStress or planeStrain only closes a 2D lattice");
+    }
+    const std::string plane = props.getWordOrDefault("plane",
+        {"planeStrain", "planeStress"}, "planeStrain");
+
+    // Missing E or nu: the lookup's error names the file and keyword.
+    const scalar E = props.getDimensioned<scalar>("E", dimensions::pressure());
+    const scalar nu = props.get<scalar>("nu");
+    try
+    {
+        spec.material.emplace(E, nu, spec.rho,
+            vcpmMaterial::latticeNamed(latticeName), dp_,
+            vcpmMaterial::planeNamed(plane));
+    }
+    catch (const FatalError& err)
+    {
+        // vcpmMaterial names the keyword; say which body and where.
+        const std::string key = err.keyword();
+        props.fatalAt(props.found(key) ? key : "E", "Keyword '" + key
+            + "' of solid '" + spec.name + "': " + err.message());
+    }
+}
+
+
+void particleGenerator::checkSolid
+(
+    const bodySpec& spec,
+    particleBody& body,
+    bodySummary& summary
+) const
+{
+    const std::string what = "Solid '" + spec.name + "'";
+
+    if (spec.clamp)
+    {
+        const scalar tol = 1e-9*dp_;
+        std::vector<label>& clamped = body.addLabelField("clamped", 0);
+        const std::vector<vec3>& position = body.position();
+        label nClamped = 0;
+        for (label p = 0; p < body.size(); ++p)
+        {
+            clamped[p] = spec.clamp->inside(position[p], tol) ? 1 : 0;
+            nClamped += clamped[p];
+        }
+        if (!nClamped)
+        {
+            const boundBox bb = spec.clamp->bounds();
+            fatalIOError(spec.clampFile, spec.clampLine, what + ": its clamp"
+                " holds none of its " + std::to_string(body.size())
+                + " particles (clamp within "
+                + shapeDetail::str(bb.min, nDimensions_) + " to "
+                + shapeDetail::str(bb.max, nDimensions_) + "): a clamp must"
+                " overlap the body's shapes", "clamp");
+        }
+        summary.nClamped = nClamped;
+    }
+
+    // Only members thinner than these layers matter: under 2 always, and
+    // in 2D with a material the 5 % minimum of vcpmBeam.H.
+    label minLayers = 2;
+    const bool bending = nDimensions_ == 2 && spec.material;
+    if (bending)
+    {
+        minLayers = std::max<label>(minLayers, minimumLayers(
+            thinMemberTolerance, spec.material->nu, spec.material->plane));
+    }
+    const latticeMembers members =
+        findThinMembers(body.position(), dp_, nDimensions_, minLayers);
+    summary.thinnestLayers = members.thinnestLayers;
+
+    if (!members.hasSecondNeighbours || (members.thinnestLayers >= 0
+     && members.thinnestLayers < 2))
+    {
+        std::ostringstream os;
+        os << what << " is too thin for the VCPM lattice: ";
+        if (members.thinnestLayers >= 0)
+        {
+            const vec3& p = body.position()[members.where];
+            os << "a member only " << members.thinnestLayers << " particle"
+               << " thick (at " << shapeDetail::str(p, nDimensions_) << ")";
+        }
+        else
+        {
+            os << "no two of its " << body.size() << " particles are"
+               << " diagonal neighbours";
+        }
+        os << " has no second-neighbour bonds across it, so it has no"
+           << " shear or bending stiffness: make the solid at least 2"
+           << " particles (2 dp = " << 2*dp_ << " m) thick everywhere";
+        fatalIOError(spec.file, spec.line, os.str(), spec.name);
+    }
+
+    if (bending && members.thinnestLayers >= 0)
+    {
+        const scalar error = thinMemberStiffnessError(
+            scalar(members.thinnestLayers), spec.material->nu,
+            spec.material->plane);
+        if (std::abs(error) > thinMemberTolerance)
+        {
+            const vec3& p = body.position()[members.where];
+            std::ostringstream os;
+            os.precision(3);
+            os << what << ": its thinnest member is "
+               << members.thinnestLayers << " layers thick (at "
+               << shapeDetail::str(p, nDimensions_) << "), so its bending"
+               << " stiffness is expected " << 100*error << " % off"
+               << " (docs/vcpm.md); " << minLayers << " layers give at most "
+               << 100*thinMemberTolerance << " % at nu = "
+               << spec.material->nu << ": refine dp to at most "
+               << dp_*members.thinnestLayers/minLayers << " m";
+            warning(os.str(), spec.file, spec.line);
+        }
+    }
 }
 
 
@@ -347,6 +533,10 @@ void particleGenerator::generate()
             s.nDropped = label(nNodes - nodes.size());
             s.volume = body.size()*cellVolume;
             s.shapeVolume = spec.shapes.volume();
+            if (type == bodyType::solid)
+            {
+                checkSolid(spec, body, s);
+            }
             summaries_.push_back(s);
 
             if (type != bodyType::fluid)
@@ -382,6 +572,10 @@ void particleGenerator::printSummary(std::ostream& os) const
                 os << ", error " << err.str() << " %";
             }
             os << ")";
+        }
+        if (s.nClamped >= 0)
+        {
+            os << ", " << s.nClamped << " clamped";
         }
         if (s.nDropped)
         {

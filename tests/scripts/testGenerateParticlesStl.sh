@@ -3,7 +3,8 @@
 # closed STL solid, water filled from a seed in an open tank with wall
 # layers on it, a 2D cut of an STL and a polygon; then bad input (missing
 # file, open surface where a closed one is needed, seed outside, an open
-# tank without a level) must end in a FATAL error that names the file or
+# tank without a level; a clamp with no particle, nu 0.6, a one-layer solid)
+# must end in a FATAL error that names the file or
 # the keyword, with a non-zero exit.
 . "$(dirname "$0")/testLib.sh"
 
@@ -125,6 +126,64 @@ expectIn "2D cut of a box: 10 x 10 particles, area error 0" \
     "$scratch/log.cut2D" "plate \(solid\): 100 particles, .*error [+-]0.00 %"
 expectIn "polygon: an L of 300 particles" \
     "$scratch/log.cut2D" "water \(fluid\): 300 particles, .*error [+-]0.00 %"
+
+# A 2D gate from a closed STL, clamped by a second STL at its top, with its
+# material from constant/solidProperties: 5 x 40 particles, the top 2 rows
+# clamped, and a warning that 5 layers are too few at nu = 0.4.
+cg="$scratch/gate2D"
+writeBoxStl "$cg/constant/geometry/gate.stl" 0 0 -0.5 0.05 0.4 0.5
+writeBoxStl "$cg/constant/geometry/support.stl" -1 0.38 -0.5 1 1 0.5
+mkdir -p "$cg/system"
+cat > "$cg/system/generateParticlesDict" <<'DICT'
+nDimensions 2;
+dp          0.01;
+bodies
+{
+    gate
+    {
+        type    solid;
+        shapes { plate { shape stl; file "constant/geometry/gate.stl"; } }
+        clamp  { top { shape stl; file "constant/geometry/support.stl"; } }
+    }
+}
+DICT
+cat > "$cg/constant/solidProperties" <<'PROPS'
+gate { rho 1100; E 12e6; nu 0.4; plane planeStress; }
+PROPS
+runCase gate2D
+check "clamped 2D gate runs" [ "$status" -eq 0 ]
+expectIn "gate: 200 particles, 10 clamped" "$scratch/log.gate2D" \
+    "gate \(solid\): 200 particles.*, 10 clamped"
+expectIn "thin gate warned" "$scratch/log.gate2D" \
+    "thinnest member is 5 layers thick.*19 layers give at most 5 %"
+check "0/gate/clamped written" [ -f "$cg/0/gate/clamped" ]
+check "10 ones in 0/gate/clamped" \
+    [ "$(grep -cx 1 "$cg/0/gate/clamped")" -eq 10 ]
+
+# gateFatal name file sed-expression pattern...: a copy of the gate case
+# with file (relative to it) edited must fail with every pattern.
+gateFatal()
+{
+    local name="$1" file="$2" edit="$3"; shift 3
+    rm -rf "$scratch/$name"
+    cp -r "$cg" "$scratch/$name"
+    rm -rf "$scratch/$name/0"
+    sed -i "$edit" "$scratch/$name/$file"
+    runCase "$name"
+    check "$name exits non-zero" [ "$status" -ne 0 ]
+    local p
+    for p in "SPHVCPM FATAL (IO )?ERROR" "$@"; do
+        expectIn "$name: /$p/" "$scratch/log.$name" "$p"
+    done
+}
+gateFatal clampEmpty constant/geometry/support.stl 's/0\.38/0.45/g' \
+    "Solid 'gate': its clamp holds none of its 200 particles" \
+    "generateParticlesDict at line 9"
+gateFatal nuTooLarge constant/solidProperties 's/nu 0.4/nu 0.6/' \
+    "Keyword 'nu' of solid 'gate'" "outside the admissible range" \
+    "solidProperties at line 1"
+gateFatal gateOneLayer constant/geometry/gate.stl 's/0\.05 /0.01 /g' \
+    "Solid 'gate' is too thin" "1 particle thick"
 
 # Bad input: each a copy of the 3D case with one change. expectFatal name
 # sed-expression pattern...: the run fails with FATAL and every pattern.

@@ -7,9 +7,11 @@
 // names file, line and keyword.
 
 #include "lattice.H"
+#include "latticeMembers.H"
 #include "particleGenerator.H"
 #include "pointLocator.H"
 #include "testGeometryTools.H"
+#include "vcpmBeam.H"
 #include "timeDirectory.H"
 
 #include <gtest/gtest.h>
@@ -68,7 +70,7 @@ const std::string fluidProperties =
 
 const std::string solidProperties =
     "gate\n{\n    model vcpm;\n    rho [1 -3 0 0 0 0 0] 2700;\n"
-    "    E 1e9;\n}\n";
+    "    E 1e9;\n    nu 0.3;\n}\n";
 
 // A scratch case with the generator's dictionary and property files.
 struct testCase
@@ -377,7 +379,7 @@ TEST(particleGenerator, propertyFileDensities)
 {
     // rho0 without dimensions, and a dimensioned solid rho.
     testCase c(exampleDict, "rho0 997;\n",
-               "gate { rho 1200; }\nother { rho 5; }\n");
+               "gate { rho 1200; E 1e9; nu 0.3; }\nother { rho 5; }\n");
     particleGenerator gen(c.path());
     gen.generate();
     EXPECT_EQ(bodyNamed(gen, "water").scalarField("rho")[0], 997);
@@ -514,6 +516,37 @@ std::vector<badCase> badCases()
          {"Shape 'column' subtracts from nothing"}},
         {"emptyBodies", "nDimensions 2;\ndp 0.01;\nbodies\n{\n}\n",
          where::dict, "bodies", {"Dictionary 'bodies' is empty"}},
+        {"clampHoldsNothing", replaced(d, "max (0.52 0.2 0); } }",
+         "max (0.52 0.2 0); } }\n        clamp { s { shape box;"
+         " min (0.6 0 0); max (0.7 0.1 0); } }"), where::dict, "clamp",
+         {"Solid 'gate': its clamp holds none of its 40 particles",
+          "(0.6 0) to (0.7 0.1)"}},
+        {"clampOnFluid", replaced(d, "U           (0.5 0 0);",
+         "U           (0.5 0 0);\n        clamp { s { shape box;"
+         " min (0 0 0); max (1 1 0); } }"), where::dict, "clamp",
+         {"Keyword 'clamp'", "body 'water' is a fluid",
+          "only solids have clamps"}},
+        {"solidTooThin", replaced(d, "max (0.52 0.2 0)", "max (0.51 0.2 0)"),
+         where::dict, "    gate", {"Solid 'gate' is too thin",
+         "a member only 1 particle thick", "no second-neighbour bonds"}},
+        {"nuAboveHalf", d, where::solidProperties, "nu",
+         {"Keyword 'nu' of solid 'gate'", "nu = 0.6",
+          "outside the admissible range (-0.5, 0.5)"}, fluidProperties,
+         "gate { rho 2700; E 1e9; nu 0.6; }\n"},
+        {"nuBelowPlaneStressBound", d, where::solidProperties, "nu",
+         {"Keyword 'nu' of solid 'gate'", "nu = -0.4",
+          "(-0.333333, 0.5)", "plane-stress"}, fluidProperties,
+         "gate { rho 2700; E 1e9; nu -0.4; plane planeStress; }\n"},
+        {"negativeE", d, where::solidProperties, "E",
+         {"Keyword 'E' of solid 'gate'", "E = -1e+09", "must be positive"},
+         fluidProperties, "gate { rho 2700; E -1e9; nu 0.3; }\n"},
+        {"missingNu", d, where::solidProperties, "",
+         {"Keyword 'nu' is undefined"}, fluidProperties,
+         "gate { rho 2700; E 1e9; }\n"},
+        {"wrongLattice", d, where::solidProperties, "lattice",
+         {"Keyword 'lattice'", "solid 'gate' is 2D", "square2D"},
+         fluidProperties,
+         "gate { rho 2700; E 1e9; nu 0.3; lattice simpleCubic3D; }\n"},
         {"badWriteFormat", d, where::controlDict, "writeFormat",
          {"Keyword 'writeFormat'", "unknown value 'text'",
           "(ascii binary)"}, fluidProperties, solidProperties,
@@ -583,4 +616,132 @@ TEST(particleGenerator, missingDictionary)
         particleGenerator gen(dir.path());
     }), {"Cannot find the particle generation dictionary",
          "system/generateParticlesDict"});
+}
+
+
+// * * * * * * * * * * * * * * * * * Solids * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// A 2D gate plate clamped at its top, dp 0.01.
+std::string gateDict(const std::string& max, const std::string& clampMin)
+{
+    return "nDimensions 2;\ndp 0.01;\nbodies\n{\n    gate\n    {\n"
+        "        type solid;\n"
+        "        shapes { plate { shape box; min (0 0 0); max " + max + "; } }\n"
+        "        clamp { top { shape box; min " + clampMin
+        + "; max (1 1 0); } }\n    }\n}\n";
+}
+
+// Nodes of an nx x ny block of the unit lattice, shifted.
+std::vector<vec3> block(label nx, label ny, scalar x0 = 0, scalar y0 = 0)
+{
+    std::vector<vec3> p;
+    for (label i = 0; i < nx; ++i)
+        for (label j = 0; j < ny; ++j)
+            p.push_back({x0 + i + 0.5, y0 + j + 0.5, 0});
+    return p;
+}
+
+} // End anonymous namespace
+
+
+TEST(particleGenerator, clampedSolid)
+{
+    testCase c(gateDict("(0.05 0.4 0)", "(-1 0.38 0)"), "",
+        "gate { rho 1100; E 12e6; nu 0.4; plane planeStress; }\n");
+    particleGenerator gen(c.path());
+    gen.generate();
+    const particleBody& gate = gen.bodies().front();
+    ASSERT_EQ(gate.size(), 5*40);
+    const std::vector<label>& clamped = gate.labelField("clamped");
+    label n = 0;
+    for (label p = 0; p < gate.size(); ++p)
+    {
+        // The top two rows: y = 0.385, 0.395.
+        EXPECT_EQ(clamped[p], gate.position()[p].y > 0.38 ? 1 : 0);
+        n += clamped[p];
+    }
+    EXPECT_EQ(n, 2*5);
+    EXPECT_EQ(gen.summaries().front().nClamped, 10);
+    EXPECT_EQ(gen.summaries().front().thinnestLayers, 5);
+    std::ostringstream os;
+    gen.printSummary(os);
+    EXPECT_NE(os.str().find("200 particles"), std::string::npos);
+    EXPECT_NE(os.str().find(", 10 clamped"), std::string::npos) << os.str();
+
+    // Written and read back as a label field.
+    gen.write();
+    const std::vector<particleBody> back =
+        readTimeDirectory(c.path(), "0");
+    ASSERT_EQ(back.size(), 1u);
+    EXPECT_EQ(back[0].labelField("clamped"), clamped);
+}
+
+
+TEST(particleGenerator, thinSolidWarns)
+{
+    // 5 layers at nu = 0.4 plane stress: -20 % or so, 19 layers for 5 %.
+    testCase c(gateDict("(0.05 0.4 0)", "(-1 0.38 0)"), "",
+        "gate { rho 1100; E 12e6; nu 0.4; plane planeStress; }\n");
+    particleGenerator gen(c.path());
+    testing::internal::CaptureStderr();
+    gen.generate();
+    const std::string err = testing::internal::GetCapturedStderr();
+    const label minLayers = minimumLayers(0.05, 0.4, planeModel::planeStress);
+    EXPECT_NE(err.find("Solid 'gate': its thinnest member is 5 layers"),
+              std::string::npos) << err;
+    EXPECT_NE(err.find(std::to_string(minLayers) + " layers give at most 5 %"),
+              std::string::npos) << err;
+
+    // Thick enough: no warning.
+    testCase thick(gateDict("(0.3 0.4 0)", "(-1 0.38 0)"), "",
+        "gate { rho 1100; E 12e6; nu 0.4; plane planeStress; }\n");
+    particleGenerator gen2(thick.path());
+    testing::internal::CaptureStderr();
+    gen2.generate();
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    EXPECT_EQ(gen2.summaries().front().thinnestLayers, -1);
+}
+
+
+TEST(latticeMembers, thickness)
+{
+    // A plate 3 thick, 20 long: 3 layers, either way round.
+    EXPECT_EQ(findThinMembers(block(20, 3), 1, 2, 100).thinnestLayers, 3);
+    EXPECT_EQ(findThinMembers(block(3, 20), 1, 2, 100).thinnestLayers, 3);
+    // Only members thinner than maxLayers are looked for.
+    EXPECT_EQ(findThinMembers(block(20, 3), 1, 2, 3).thinnestLayers, -1);
+    // A square block is no member; a thin beam on it is.
+    EXPECT_EQ(findThinMembers(block(10, 10), 1, 2, 100).thinnestLayers, -1);
+    std::vector<vec3> beam = block(10, 10);
+    for (const vec3& p : block(30, 4, 10, 3)) beam.push_back(p);
+    EXPECT_EQ(findThinMembers(beam, 1, 2, 100).thinnestLayers, 4);
+
+    // A disc: the odd particle at its top is not a member.
+    std::vector<vec3> disc;
+    for (label i = -12; i <= 12; ++i)
+        for (label j = -12; j <= 12; ++j)
+            if (i*i + j*j < 10.01*10.01) disc.push_back({scalar(i), scalar(j), 0});
+    const latticeMembers d = findThinMembers(disc, 1, 2, 100);
+    EXPECT_EQ(d.thinnestLayers, -1);
+    EXPECT_TRUE(d.hasSecondNeighbours);
+
+    // One row: 1 layer, no diagonal bonds; one particle: no member either.
+    const latticeMembers row = findThinMembers(block(10, 1), 1, 2, 100);
+    EXPECT_EQ(row.thinnestLayers, 1);
+    EXPECT_FALSE(row.hasSecondNeighbours);
+    EXPECT_FALSE(findThinMembers(block(1, 1), 1, 2, 100).hasSecondNeighbours);
+
+    // 3D: a plate 2 thick in z.
+    std::vector<vec3> plate;
+    for (const vec3& p : block(12, 12))
+        for (label k = 0; k < 2; ++k) plate.push_back({p.x, p.y, scalar(k)});
+    EXPECT_EQ(findThinMembers(plate, 1, 3, 100).thinnestLayers, 2);
+
+    // Spacing dp and an offset lattice.
+    std::vector<vec3> scaled;
+    for (const vec3& p : block(20, 3)) scaled.push_back({0.01*p.x + 0.3, 0.01*p.y, 0});
+    EXPECT_EQ(findThinMembers(scaled, 0.01, 2, 100).thinnestLayers, 3);
 }

@@ -1,0 +1,158 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "latticeMembers.H"
+#include "error.H"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace sphvcpm
+{
+
+namespace
+{
+
+using cell = std::array<std::int64_t, 3>;
+
+// 21 bits per axis: room for 2 million layers each way.
+std::int64_t packed(const cell& c)
+{
+    const std::int64_t offset = 1 << 20, mask = (1 << 21) - 1;
+    return ((c[0] + offset) & mask) | (((c[1] + offset) & mask) << 21)
+         | (((c[2] + offset) & mask) << 42);
+}
+
+} // End anonymous namespace
+
+
+latticeMembers findThinMembers
+(
+    const std::vector<vec3>& points,
+    const scalar dp,
+    const int nDimensions,
+    const label maxLayers
+)
+{
+    latticeMembers result;
+    const std::size_t n = points.size();
+    if (!n)
+    {
+        return result;
+    }
+
+    // Integer cells relative to the first point: every body lies on one
+    // lattice, so differences are whole multiples of dp.
+    std::vector<cell> cells(n);
+    std::unordered_map<std::int64_t, label> index;
+    index.reserve(2*n);
+    for (std::size_t p = 0; p < n; ++p)
+    {
+        for (int a = 0; a < 3; ++a)
+        {
+            const scalar s = (points[p][a] - points[0][a])/dp;
+            cells[p][a] = std::llround(s);
+            if (std::abs(s - scalar(cells[p][a])) > 0.25)
+            {
+                fatalError("findThinMembers: the particles are not on one"
+                           " lattice of spacing dp");
+            }
+        }
+        index[packed(cells[p])] = label(p);
+    }
+    auto neighbour = [&](label p, int a, int step) -> label
+    {
+        cell c = cells[p];
+        c[a] += step;
+        const auto it = index.find(packed(c));
+        return it == index.end() ? -1 : it->second;
+    };
+
+    // Unbroken runs along each axis, counted from the run's first node.
+    std::vector<std::array<label, 3>> run(n, {0, 0, 0});
+    for (int a = 0; a < nDimensions; ++a)
+    {
+        for (label p = 0; p < label(n); ++p)
+        {
+            if (neighbour(p, a, -1) >= 0)
+            {
+                continue;   // not the first of its run
+            }
+            label length = 0;
+            for (label q = p; q >= 0; q = neighbour(q, a, +1))
+            {
+                ++length;
+            }
+            for (label q = p; q >= 0; q = neighbour(q, a, +1))
+            {
+                run[q][a] = length;
+            }
+        }
+    }
+
+    for (label p = 0; p < label(n); ++p)
+    {
+        // Second neighbours: diagonal in some pair of axes.
+        for (int a = 0; a < nDimensions && !result.hasSecondNeighbours; ++a)
+        {
+            for (int b = a + 1; b < nDimensions; ++b)
+            {
+                for (const int sb : {-1, 1})
+                {
+                    cell c = cells[p];
+                    c[a] += 1;
+                    c[b] += sb;
+                    if (index.count(packed(c)))
+                    {
+                        result.hasSecondNeighbours = true;
+                    }
+                }
+            }
+        }
+
+        int shortAxis = 0;
+        for (int a = 1; a < nDimensions; ++a)
+        {
+            if (run[p][a] < run[p][shortAxis]) shortAxis = a;
+        }
+        const label thickness = run[p][shortAxis];
+        if (thickness >= maxLayers
+         || (result.thinnestLayers >= 0 && thickness >= result.thinnestLayers))
+        {
+            continue;
+        }
+        // Slender: 2 x thickness particles in a row no thicker than p.
+        for (int b = 0; b < nDimensions; ++b)
+        {
+            if (b == shortAxis)
+            {
+                continue;
+            }
+            label length = 1;
+            for (const int step : {-1, 1})
+            {
+                for
+                (
+                    label q = neighbour(p, b, step);
+                    q >= 0 && run[q][shortAxis] <= thickness
+                 && length < 2*thickness;
+                    q = neighbour(q, b, step)
+                )
+                {
+                    ++length;
+                }
+            }
+            if (length >= 2*thickness)
+            {
+                result.thinnestLayers = thickness;
+                result.where = p;
+                break;
+            }
+        }
+    }
+    return result;
+}
+
+} // End namespace sphvcpm
