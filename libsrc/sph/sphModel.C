@@ -77,6 +77,27 @@ std::string typeOf(const dictionary& dict, const std::string& key,
 } // End anonymous namespace
 
 
+vec3 readGravity(const std::filesystem::path& caseDir, const int nDimensions)
+{
+    // constant/g (OpenFOAM's uniformDimensionedVectorField); default:
+    // -9.81 along y in 2D and along z in 3D.
+    const auto file = caseDir/"constant/g";
+    if (!std::filesystem::exists(file))
+    {
+        return nDimensions == 3 ? vec3{0, 0, -9.81} : vec3{0, -9.81, 0};
+    }
+    const dictionary dict = dictionary::fromFile(file);
+    dict.checkKeywords({"dimensions", "value"});
+    const vec3 g = dict.get<vec3>("value");
+    if (nDimensions == 2 && g.z != 0)
+    {
+        dict.fatalAt("value", "a 2D case lies in the x-y plane:"
+            " gravity must have z = 0");
+    }
+    return g;
+}
+
+
 sphModel readSphModel(const std::filesystem::path& caseDir,
                       const int nDimensions, const scalar dp)
 {
@@ -221,26 +242,7 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
              == "SPS";
     }
 
-    // constant/g (OpenFOAM's uniformDimensionedVectorField); default:
-    // -9.81 along y in 2D and along z in 3D.
-    {
-        const auto file = caseDir/"constant/g";
-        if (std::filesystem::exists(file))
-        {
-            const dictionary dict = dictionary::fromFile(file);
-            dict.checkKeywords({"dimensions", "value"});
-            m.g = dict.get<vec3>("value");
-            if (nDimensions == 2 && m.g.z != 0)
-            {
-                dict.fatalAt("value", "a 2D case lies in the x-y plane:"
-                    " gravity must have z = 0");
-            }
-        }
-        else
-        {
-            m.g = nDimensions == 3 ? vec3{0, 0, -9.81} : vec3{0, -9.81, 0};
-        }
-    }
+    m.g = readGravity(caseDir, nDimensions);
 
     return m;
 }

@@ -106,45 +106,48 @@ sphSolver::sphSolver(const fs::path& caseDir, std::ostream& log)
 sphSolver::~sphSolver() = default;
 
 
-void sphSolver::readStartTime()
+std::string startTimeName(const fs::path& caseDir,
+                          const timeControl& control)
 {
-    const auto times = findTimes(caseDir_);
-    const std::string controlFile = (caseDir_/"system/controlDict").string();
+    const auto times = findTimes(caseDir);
+    const std::string controlFile = (caseDir/"system/controlDict").string();
     if (times.empty())
     {
-        fatalError("No time directory in " + caseDir_.string()
+        fatalError("No time directory in " + caseDir.string()
             + ": run generateParticles first to write 0/");
     }
-    switch (control_.startFrom)
+    switch (control.startFrom)
     {
         case startFromType::latestTime:
-            startTimeName_ = times.back().name;
-            break;
+            return times.back().name;
         case startFromType::firstTime:
-            startTimeName_ = times.front().name;
-            break;
+            return times.front().name;
         case startFromType::startTime:
-        {
-            auto it = std::find_if(times.begin(), times.end(),
-                [&](const timeInstant& t)
-                {
-                    return std::fabs(t.value - control_.startTime)
-                        <= 1e-12*std::max(1.0, std::fabs(t.value));
-                });
-            if (it == times.end())
-            {
-                std::string list;
-                for (const auto& t : times) list += " " + t.name;
-                fatalIOError(controlFile,
-                    control_.dict.lookupEntry("startTime").line(),
-                    "startTime " + str(control_.startTime)
-                    + " has no time directory; the case has:" + list,
-                    "startTime");
-            }
-            startTimeName_ = it->name;
             break;
-        }
     }
+    auto it = std::find_if(times.begin(), times.end(),
+        [&](const timeInstant& t)
+        {
+            return std::fabs(t.value - control.startTime)
+                <= 1e-12*std::max(1.0, std::fabs(t.value));
+        });
+    if (it == times.end())
+    {
+        std::string list;
+        for (const auto& t : times) list += " " + t.name;
+        fatalIOError(controlFile,
+            control.dict.lookupEntry("startTime").line(),
+            "startTime " + str(control.startTime)
+            + " has no time directory; the case has:" + list,
+            "startTime");
+    }
+    return it->name;
+}
+
+
+void sphSolver::readStartTime()
+{
+    startTimeName_ = startTimeName(caseDir_, control_);
 
     const timeState state = readTimeState(caseDir_, startTimeName_);
     // Index 0: the initial state (generateParticles), not a solver write.
@@ -168,8 +171,9 @@ void sphSolver::readStartTime()
         if (b.type() == bodyType::solid)
         {
             fatalError("Body " + b.name() + " of time " + startTimeName_
-                + " is a solid: elastic (VCPM) solids are not supported by"
-                  " this version of sphVcpmFsi; use fluid and wall bodies");
+                + " is a solid beside a fluid: SPH-VCPM coupling is not yet"
+                  " available; run the solid alone (no fluid body) or the"
+                  " fluid with wall bodies");
         }
         if (b.type() == bodyType::fluid && dp == 0)
         {
