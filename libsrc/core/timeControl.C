@@ -4,6 +4,7 @@
 #include "timeControl.H"
 #include "error.H"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sphvcpm
@@ -93,6 +94,86 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
     }
     tc.device = d.getWordOrDefault("device", {"cpu", "cuda"}, "cpu");
     return tc;
+}
+
+} // End namespace sphvcpm
+
+
+namespace sphvcpm
+{
+
+writeSchedule::writeSchedule(const timeControl& control,
+                             const scalar startTime)
+:
+    control_(control),
+    next_((std::floor(startTime/control.writeInterval + 1e-9) + 1)
+          *control.writeInterval)
+{}
+
+
+scalar writeSchedule::limitStep(const scalar time, scalar dt)
+{
+    landed_ = false;
+    scalar target = control_.endTime;
+    if (control_.writeControl == writeControlType::adjustableRunTime)
+    {
+        target = std::min(target, next_);
+    }
+    const scalar remaining = target - time;
+    if (remaining <= dt*(1 + 1e-9))
+    {
+        dt = remaining;
+        landed_ = true;
+    }
+    else if (remaining < 2*dt)
+    {
+        dt = 0.5*remaining;    // two even steps rather than a sliver
+    }
+    return dt;
+}
+
+
+scalar writeSchedule::landingTime() const
+{
+    return control_.writeControl == writeControlType::adjustableRunTime
+      ? std::min(control_.endTime, next_) : control_.endTime;
+}
+
+
+bool writeSchedule::due(const scalar time, const label timeIndex) const
+{
+    switch (control_.writeControl)
+    {
+        case writeControlType::timeStep:
+            return timeIndex % label(control_.writeInterval) == 0;
+        case writeControlType::runTime:
+            return time >= next_*(1 - 1e-12);
+        default:
+            return landed_ && time >= next_*(1 - 1e-12);
+    }
+}
+
+
+void writeSchedule::written(const scalar time, const std::string& name,
+                            const std::filesystem::path& caseDir,
+                            const std::string& startTimeName)
+{
+    while (next_ <= time*(1 + 1e-12))
+    {
+        next_ += control_.writeInterval;
+    }
+    if (control_.purgeWrite > 0 && name != startTimeName)
+    {
+        if (writtenNames_.empty() || writtenNames_.back() != name)
+        {
+            writtenNames_.push_back(name);
+        }
+        while (label(writtenNames_.size()) > control_.purgeWrite)
+        {
+            std::filesystem::remove_all(caseDir/writtenNames_.front());
+            writtenNames_.erase(writtenNames_.begin());
+        }
+    }
 }
 
 } // End namespace sphvcpm

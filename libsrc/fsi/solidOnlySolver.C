@@ -213,44 +213,6 @@ solidOnlySolver::solidOnlySolver
 }
 
 
-// Write times as the fluid loop lands on them (sphSolver::chooseDeltaT).
-scalar solidOnlySolver::chooseDeltaT()
-{
-    scalar dt = stableDeltaT_;
-    writeNow_ = false;
-    scalar target = control_.endTime;
-    if (control_.writeControl == writeControlType::adjustableRunTime)
-    {
-        target = std::min(target, nextWriteTime_);
-    }
-    const scalar remaining = target - time_;
-    if (remaining <= dt*(1 + 1e-9))
-    {
-        dt = remaining;
-        writeNow_ = true;
-    }
-    else if (remaining < 2*dt)
-    {
-        dt = 0.5*remaining;
-    }
-    return dt;
-}
-
-
-bool solidOnlySolver::writeDue() const
-{
-    switch (control_.writeControl)
-    {
-        case writeControlType::timeStep:
-            return timeIndex_ % label(control_.writeInterval) == 0;
-        case writeControlType::runTime:
-            return time_ >= nextWriteTime_*(1 - 1e-12);
-        default:
-            return writeNow_ && time_ >= nextWriteTime_*(1 - 1e-12);
-    }
-}
-
-
 void solidOnlySolver::write()
 {
     std::vector<particleBody> out;
@@ -292,37 +254,18 @@ void solidOnlySolver::write()
     }
     for (particleBody& o : out) o.setNextId(maxId + 1);
 
-    timeState state;
-    state.value = time_;
-    state.name = control_.name(time_);
-    state.index = timeIndex_;
-    state.deltaT = deltaT_;
-    state.deltaT0 = deltaT_;
-    state.beginTime = beginTime_;
+    const timeState state{time_, control_.name(time_), timeIndex_, deltaT_,
+                          deltaT_, beginTime_, {}};
     writeTimeDirectory(caseDir_, state, out,
         writeFormatFromName(control_.writeFormatName),
         control_.writePrecision);
     log_<< "Writing time " << state.name << std::endl;
-
-    if (control_.purgeWrite > 0 && state.name != startTimeName_)
-    {
-        if (writtenTimes_.empty() || writtenTimes_.back() != state.name)
-        {
-            writtenTimes_.push_back(state.name);
-        }
-        while (label(writtenTimes_.size()) > control_.purgeWrite)
-        {
-            fs::remove_all(caseDir_/writtenTimes_.front());
-            writtenTimes_.erase(writtenTimes_.begin());
-        }
-    }
 }
 
 
 void solidOnlySolver::run()
 {
-    const scalar interval = control_.writeInterval;
-    nextWriteTime_ = (std::floor(time_/interval + 1e-9) + 1)*interval;
+    schedule_.emplace(control_, time_);
     if (time_ >= control_.endTime*(1 - 1e-12))
     {
         log_<< "Time " << time_ << " is at or past endTime "
@@ -336,15 +279,14 @@ void solidOnlySolver::run()
     label stepsRun = 0;
     while (time_ < control_.endTime*(1 - 1e-12))
     {
-        const scalar dt = chooseDeltaT();
+        // The same write times as the fluid loop.
+        const scalar dt = schedule_->limitStep(time_, stableDeltaT_);
         for (body& b : bodies_) b.solid->step(openmpExec{}, dt);
         deltaT_ = dt;
         time_ += dt;
-        if (writeNow_)
+        if (schedule_->landed())
         {
-            time_ =
-                control_.writeControl == writeControlType::adjustableRunTime
-              ? std::min(control_.endTime, nextWriteTime_) : control_.endTime;
+            time_ = schedule_->landingTime();
         }
         ++timeIndex_;
         ++stepsRun;
@@ -363,13 +305,11 @@ void solidOnlySolver::run()
         }
 
         const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
-        if (writeDue() || atEnd)
+        if (schedule_->due(time_, timeIndex_) || atEnd)
         {
             write();
-            while (nextWriteTime_ <= time_*(1 + 1e-12))
-            {
-                nextWriteTime_ += interval;
-            }
+            schedule_->written(time_, control_.name(time_), caseDir_,
+                               startTimeName_);
         }
         if (stepsRun % control_.logInterval == 0 || atEnd)
         {

@@ -531,22 +531,7 @@ scalar sphSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
     }
 
     // Land on write times (adjustableRunTime) and on endTime.
-    writeNow_ = false;
-    scalar target = control_.endTime;
-    if (control_.writeControl == writeControlType::adjustableRunTime)
-    {
-        target = std::min(target, nextWriteTime_);
-    }
-    const scalar remaining = target - time_;
-    if (remaining <= dt*(1 + 1e-9))
-    {
-        dt = remaining;
-        writeNow_ = true;
-    }
-    else if (remaining < 2*dt)
-    {
-        dt = 0.5*remaining;    // two even steps rather than a sliver
-    }
+    dt = schedule_->limitStep(time_, dt);
     return dt;
 }
 
@@ -567,7 +552,7 @@ void sphSolver::step()
     }
 
     const scalar dt = chooseDeltaT(maxAcc2, maxVisc, maxVel2);
-    if (dt < control_.minDeltaT && !writeNow_)
+    if (dt < control_.minDeltaT && !schedule_->landed())
     {
         // The particle that limits the step.
         label worst = 0;
@@ -608,13 +593,10 @@ void sphSolver::step()
     deltaT0_ = deltaT_;
     deltaT_ = dt;
     time_ += dt;
-    if (writeNow_)
+    if (schedule_->landed())
     {
         // Exactly on the target, so that names and restarts agree.
-        const scalar target =
-            control_.writeControl == writeControlType::adjustableRunTime
-          ? std::min(control_.endTime, nextWriteTime_) : control_.endTime;
-        time_ = target;
+        time_ = schedule_->landingTime();
     }
     ++timeIndex_;
     ++stepsRun_;
@@ -746,31 +728,12 @@ void sphSolver::write()
     }
     for (particleBody& body : out) body.setNextId(maxId + 1);
 
-    timeState state;
-    state.value = time_;
-    state.name = control_.name(time_);
-    state.index = timeIndex_;
-    state.deltaT = deltaT_;
-    state.deltaT0 = deltaT0_;
-    state.beginTime = beginTime_;
-    state.solverValues = {{"c0", model_.c0}};
+    const timeState state{time_, control_.name(time_), timeIndex_, deltaT_,
+                          deltaT0_, beginTime_, {{"c0", model_.c0}}};
     writeTimeDirectory(caseDir_, state, out,
         writeFormatFromName(control_.writeFormatName),
         control_.writePrecision);
     log_<< "Writing time " << state.name << std::endl;
-
-    if (control_.purgeWrite > 0 && state.name != startTimeName_)
-    {
-        if (writtenTimes_.empty() || writtenTimes_.back() != state.name)
-        {
-            writtenTimes_.push_back(state.name);
-        }
-        while (label(writtenTimes_.size()) > control_.purgeWrite)
-        {
-            fs::remove_all(caseDir_/writtenTimes_.front());
-            writtenTimes_.erase(writtenTimes_.begin());
-        }
-    }
 }
 
 
@@ -785,31 +748,9 @@ void sphSolver::executeFunctions()
 }
 
 
-bool sphSolver::writeDue() const
-{
-    switch (control_.writeControl)
-    {
-        case writeControlType::timeStep:
-            return timeIndex_ % label(control_.writeInterval) == 0;
-        case writeControlType::runTime:
-            return time_ >= nextWriteTime_*(1 - 1e-12);
-        default:
-            return writeNow_ && time_ >= nextWriteTime_*(1 - 1e-12);
-    }
-}
-
-
 void sphSolver::run()
 {
-    const scalar interval = control_.writeInterval;
-    auto nextWriteAfter = [&](scalar t)
-    {
-        // The next multiple of writeInterval (measured from zero, as
-        // OpenFOAM does) strictly after t.
-        scalar k = std::floor(t/interval + 1e-9) + 1;
-        return k*interval;
-    };
-    nextWriteTime_ = nextWriteAfter(time_);
+    schedule_.emplace(control_, time_);
 
     if (time_ >= control_.endTime*(1 - 1e-12))
     {
@@ -831,13 +772,11 @@ void sphSolver::run()
         executeFunctions();
 
         const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
-        if (writeDue() || atEnd)
+        if (schedule_->due(time_, timeIndex_) || atEnd)
         {
             write();
-            while (nextWriteTime_ <= time_*(1 + 1e-12))
-            {
-                nextWriteTime_ += interval;
-            }
+            schedule_->written(time_, control_.name(time_), caseDir_,
+                               startTimeName_);
         }
         if (stepsRun_ % control_.logInterval == 0 || atEnd)
         {
