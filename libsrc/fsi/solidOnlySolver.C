@@ -57,23 +57,6 @@ vcpmMaterial solidOnlySolver::readMaterial
     }
     const dictionary all = dictionary::fromFile(file);
     const dictionary& props = all.subDict(name);
-    const std::string expected = nDim_ == 2 ? "square2D" : "simpleCubic3D";
-    const std::string lattice = props.getWordOrDefault("lattice",
-        {"simpleCubic3D", "square2D"}, expected);
-    if (lattice != expected)
-    {
-        props.fatalAt("lattice", "Keyword 'lattice': solid '" + name + "' is "
-            + std::to_string(nDim_) + "D, which needs lattice " + expected);
-    }
-    if (nDim_ == 3 && props.found("plane"))
-    {
-        props.fatalAt("plane", "Keyword 'plane': solid '" + name
-            + "' is 3D; planeStress or planeStrain only closes a 2D lattice");
-    }
-    const std::string plane = props.getWordOrDefault("plane",
-        {"planeStrain", "planeStress"}, "planeStrain");
-    const scalar E = props.getDimensioned<scalar>("E", dimensions::pressure());
-    const scalar nu = props.get<scalar>("nu");
     // rho of the sub-dictionary, else the one generateParticles gave the
     // particles' mass (a body-level rho).
     const scalar rho = props.found("rho")
@@ -84,17 +67,7 @@ vcpmMaterial solidOnlySolver::readMaterial
         props.fatalAt("damping", "Keyword 'damping' of solid '" + name
             + "': the mass-proportional damping (1/s) must be >= 0");
     }
-    try
-    {
-        return vcpmMaterial(E, nu, rho, vcpmMaterial::latticeNamed(lattice),
-            dp, vcpmMaterial::planeNamed(plane));
-    }
-    catch (const FatalError& err)
-    {
-        const std::string key = err.keyword();
-        props.fatalAt(props.found(key) ? key : "E", "Keyword '" + key
-            + "' of solid '" + name + "': " + err.message());
-    }
+    return vcpmMaterial::read(props, name, nDim_, rho, dp);
 }
 
 

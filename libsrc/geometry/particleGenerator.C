@@ -206,7 +206,8 @@ void particleGenerator::readBody
     {
         if (const dictionary* props = solidPropertiesOf(name))
         {
-            readMaterial(spec, *props);
+            spec.material.emplace(vcpmMaterial::read(*props, spec.name,
+                nDimensions_, spec.rho, dp_));
         }
     }
 
@@ -285,51 +286,6 @@ const dictionary* particleGenerator::solidPropertiesOf(const std::string& name)
         solidProperties_ = dictionary::fromFile(file);
     }
     return solidProperties_->findDict(name);
-}
-
-
-void particleGenerator::readMaterial
-(
-    bodySpec& spec,
-    const dictionary& props
-)
-{
-    const std::string expected = nDimensions_ == 2 ? "square2D"
-                                                   : "simpleCubic3D";
-    const std::string latticeName =
-        props.getWordOrDefault("lattice", {"simpleCubic3D", "square2D"},
-                               expected);
-    if (latticeName != expected)
-    {
-        props.fatalAt("lattice", "Keyword 'lattice': solid '" + spec.name
-            + "' is " + std::to_string(nDimensions_) + "D (nDimensions of "
-            + dictFile_.string() + "), which needs lattice " + expected
-            + ", not " + latticeName);
-    }
-    if (nDimensions_ == 3 && props.found("plane"))
-    {
-        props.fatalAt("plane", "Keyword 'plane': solid '" + spec.name
-            + "' is 3D; planeStress or planeStrain only closes a 2D lattice");
-    }
-    const std::string plane = props.getWordOrDefault("plane",
-        {"planeStrain", "planeStress"}, "planeStrain");
-
-    // Missing E or nu: the lookup's error names the file and keyword.
-    const scalar E = props.getDimensioned<scalar>("E", dimensions::pressure());
-    const scalar nu = props.get<scalar>("nu");
-    try
-    {
-        spec.material.emplace(E, nu, spec.rho,
-            vcpmMaterial::latticeNamed(latticeName), dp_,
-            vcpmMaterial::planeNamed(plane));
-    }
-    catch (const FatalError& err)
-    {
-        // vcpmMaterial names the keyword; say which body and where.
-        const std::string key = err.keyword();
-        props.fatalAt(props.found(key) ? key : "E", "Keyword '" + key
-            + "' of solid '" + spec.name + "': " + err.message());
-    }
 }
 
 

@@ -4,6 +4,7 @@
 #include "vcpmMaterial.H"
 
 #include "error.H"
+#include "dictionary.H"
 
 #include <cmath>
 #include <sstream>
@@ -95,6 +96,52 @@ vcpmMaterial::vcpmMaterial(const scalar E_, const scalar nu_,
         cellVolume = l0*l0*l0;
     }
     mass = rho*cellVolume;
+}
+
+
+vcpmMaterial vcpmMaterial::read
+(
+    const dictionary& props,
+    const std::string& solidName,
+    const int nDimensions,
+    const scalar rho,
+    const scalar l0
+)
+{
+    const std::string expected = nDimensions == 2 ? "square2D"
+                                                  : "simpleCubic3D";
+    const std::string latticeName =
+        props.getWordOrDefault("lattice", {"simpleCubic3D", "square2D"},
+                               expected);
+    if (latticeName != expected)
+    {
+        props.fatalAt("lattice", "Keyword 'lattice': solid '" + solidName
+            + "' is " + std::to_string(nDimensions) + "D, which needs"
+              " lattice " + expected + ", not " + latticeName);
+    }
+    if (nDimensions == 3 && props.found("plane"))
+    {
+        props.fatalAt("plane", "Keyword 'plane': solid '" + solidName
+            + "' is 3D; planeStress or planeStrain only closes a 2D lattice");
+    }
+    const std::string plane = props.getWordOrDefault("plane",
+        {"planeStrain", "planeStress"}, "planeStrain");
+
+    // Missing E or nu: the lookup's error names the file and keyword.
+    const scalar E = props.getDimensioned<scalar>("E", dimensions::pressure());
+    const scalar nu = props.get<scalar>("nu");
+    try
+    {
+        return vcpmMaterial(E, nu, rho, latticeNamed(latticeName), l0,
+                            planeNamed(plane));
+    }
+    catch (const FatalError& err)
+    {
+        // The constructor names the keyword; say which solid and where.
+        const std::string key = err.keyword();
+        props.fatalAt(props.found(key) ? key : "E", "Keyword '" + key
+            + "' of solid '" + solidName + "': " + err.message());
+    }
 }
 
 
