@@ -4,6 +4,7 @@
 // Even-odd region of line segments in the x-y plane.
 
 #include "planarRegion.H"
+#include "binLists.H"
 
 #include <algorithm>
 #include <cmath>
@@ -64,37 +65,18 @@ planarRegion::planarRegion(std::vector<segment> segments)
         return std::clamp<std::int64_t>(r >= 0 ? std::int64_t(std::min(
             r, scalar(nRows_))) : 0, 0, nRows_ - 1);
     };
-    start_.assign(nRows_ + 1, 0);
-    for (int pass = 0; pass < 2; ++pass)
-    {
-        std::vector<std::int64_t> at;
-        if (pass == 1)
-        {
-            for (std::size_t r = 1; r < start_.size(); ++r)
-            {
-                start_[r] += start_[r - 1];
-            }
-            items_.resize(start_.back());
-            at.assign(start_.begin(), start_.end() - 1);
-        }
-        for (std::size_t i = 0; i < segments_.size(); ++i)
+    buildBinLists(nRows_, segments_.size(),
+        [&](const std::size_t i, const auto& visit)
         {
             const segment& s = segments_[i];
             const std::int64_t a = row(std::min(s.y0, s.y1));
             const std::int64_t b = row(std::max(s.y0, s.y1));
             for (std::int64_t r = a; r <= b; ++r)
             {
-                if (pass == 0)
-                {
-                    ++start_[r + 1];
-                }
-                else
-                {
-                    items_[at[r]++] = i;
-                }
+                visit(r);
             }
-        }
-    }
+        },
+        start_, items_);
 }
 
 

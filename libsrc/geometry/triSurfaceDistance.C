@@ -4,6 +4,7 @@
 // Nearest surface point within a radius over a uniform grid of triangles.
 
 #include "triSurfaceDistance.H"
+#include "binLists.H"
 
 #include <algorithm>
 #include <cmath>
@@ -145,20 +146,8 @@ triSurfaceDistance::triSurfaceDistance(const triSurface& surf, scalar radius)
         return !(d2 > reach*reach);     // NaN (overflow): keep it
     };
 
-    start_.assign(n_[0]*n_[1]*n_[2] + 1, 0);
-    for (int pass = 0; pass < 2; ++pass)
-    {
-        std::vector<std::int64_t> at;
-        if (pass == 1)
-        {
-            for (std::size_t c = 1; c < start_.size(); ++c)
-            {
-                start_[c] += start_[c - 1];
-            }
-            items_.resize(start_.back());
-            at.assign(start_.begin(), start_.end() - 1);
-        }
-        for (std::size_t fi = 0; fi < faces_.size(); ++fi)
+    buildBinLists(n_[0]*n_[1]*n_[2], faces_.size(),
+        [&](const std::size_t fi, const auto& visit)
         {
             std::int64_t lo[3], hi[3];
             range(faces_[fi], lo, hi);
@@ -168,24 +157,15 @@ triSurfaceDistance::triSurfaceDistance(const triSurface& surf, scalar radius)
                 {
                     for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
                     {
-                        const std::int64_t c = (k*n_[1] + j)*n_[0] + i;
-                        if (!near(faces_[fi], i, j, k))
+                        if (near(faces_[fi], i, j, k))
                         {
-                            continue;
-                        }
-                        if (pass == 0)
-                        {
-                            ++start_[c + 1];
-                        }
-                        else
-                        {
-                            items_[at[c]++] = label(fi);
+                            visit((k*n_[1] + j)*n_[0] + i);
                         }
                     }
                 }
             }
-        }
-    }
+        },
+        start_, items_);
 }
 
 

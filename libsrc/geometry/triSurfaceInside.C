@@ -4,6 +4,7 @@
 // Ray parity along the three axes over per-axis 2D bins of triangles.
 
 #include "triSurfaceInside.H"
+#include "binLists.H"
 
 #include <algorithm>
 #include <cmath>
@@ -160,37 +161,20 @@ void triSurfaceInside::build(const triSurface& surf, int axis)
     }
 
     // Bin lists (compressed rows).
-    g.start.assign(g.nu*g.nv + 1, 0);
-    for (const projected& t : g.triangles)
-    {
-        std::int64_t lo[2], hi[2];
-        binRange(t, lo, hi);
-        for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+    buildBinLists(g.nu*g.nv, g.triangles.size(),
+        [&](const std::size_t ti, const auto& visit)
         {
-            for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+            std::int64_t lo[2], hi[2];
+            binRange(g.triangles[ti], lo, hi);
+            for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
             {
-                ++g.start[j*g.nu + i + 1];
+                for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+                {
+                    visit(j*g.nu + i);
+                }
             }
-        }
-    }
-    for (std::size_t b = 1; b < g.start.size(); ++b)
-    {
-        g.start[b] += g.start[b - 1];
-    }
-    g.items.resize(g.start.back());
-    std::vector<std::int64_t> fillAt(g.start.begin(), g.start.end() - 1);
-    for (std::size_t ti = 0; ti < g.triangles.size(); ++ti)
-    {
-        std::int64_t lo[2], hi[2];
-        binRange(g.triangles[ti], lo, hi);
-        for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
-        {
-            for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
-            {
-                g.items[fillAt[j*g.nu + i]++] = label(ti);
-            }
-        }
-    }
+        },
+        g.start, g.items);
 }
 
 
