@@ -12,6 +12,7 @@
 #include "vcpmBeam.H"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <ostream>
 #include <sstream>
@@ -30,7 +31,8 @@ const std::vector<std::string> topKeywords =
     {"nDimensions", "dp", "latticeOrigin", "bodies"};
 
 const std::vector<std::string> bodyKeywords =
-    {"type", "rho", "U", "latticeOrigin", "container", "shapes", "clamp"};
+    {"type", "rho", "U", "latticeOrigin", "container", "shapes", "clamp",
+     "dp"};
 
 // The generation order: what a later body must not overlap comes first.
 const bodyType buildOrder[] = {bodyType::solid, bodyType::wall,
@@ -115,10 +117,31 @@ void particleGenerator::readBody
 
     const bodyType type = bodyTypeFromName(
         dict.getWord("type", {"fluid", "solid", "wall"}));
+    // A solid may be finer than the fluid: dp/r, r = 1..4 (multi-resolution).
+    scalar dp = dp_;
+    if (dict.found("dp"))
+    {
+        dp = dict.getPositive("dp");
+        const scalar r = dp_/dp;
+        const scalar rInt = std::round(r);
+        if (type != bodyType::solid)
+        {
+            dict.fatalAt("dp", "Keyword 'dp': body '" + name + "' is a "
+                + bodyTypeName(type) + "; only solids may have their own"
+                " spacing (fluids and walls use the top-level dp)");
+        }
+        if (rInt < 1 || rInt > 4 || std::abs(r - rInt) > 1e-6*r)
+        {
+            dict.fatalAt("dp", "Keyword 'dp' of solid '" + name + "': expected"
+                " the top-level dp " + shapeDetail::str(dp_) + " divided by 1,"
+                " 2, 3 or 4, found " + shapeDetail::str(dp) + " (ratio "
+                + shapeDetail::str(r) + ")");
+        }
+    }
     try
     {
         // Checks the name as a directory of 0/.
-        (void)particleBody(name, type, nDimensions_, dp_);
+        (void)particleBody(name, type, nDimensions_, dp);
     }
     catch (const FatalError& err)
     {
@@ -138,7 +161,8 @@ void particleGenerator::readBody
         std::nullopt,   // clamp, read below
         "",
         0,
-        std::nullopt    // material, read below
+        std::nullopt,   // material, read below
+        dp
     };
     if (nDimensions_ == 2 && spec.U.z != 0)
     {
@@ -159,12 +183,12 @@ void particleGenerator::readBody
         spec.shapes.add
         (
             std::make_unique<containerShape>("container", c, nDimensions_,
-                                             dp_)
+                                             dp)
         );
     }
     if (dict.found("shapes"))
     {
-        spec.shapes.addShapes(dict.subDict("shapes"), dp_, caseDir_,
+        spec.shapes.addShapes(dict.subDict("shapes"), dp, caseDir_,
                               spec.origin);
     }
 
@@ -183,7 +207,7 @@ void particleGenerator::readBody
                 " max (..); } }");
         }
         spec.clamp.emplace(nDimensions_);
-        spec.clamp->addShapes(c.dict(), dp_, caseDir_, spec.origin);
+        spec.clamp->addShapes(c.dict(), dp, caseDir_, spec.origin);
         spec.clampFile = c.file();
         spec.clampLine = c.line();
     }
@@ -207,7 +231,7 @@ void particleGenerator::readBody
         if (const dictionary* props = solidPropertiesOf(name))
         {
             spec.material.emplace(vcpmMaterial::read(*props, spec.name,
-                nDimensions_, spec.rho, dp_));
+                nDimensions_, spec.rho, dp));
         }
     }
 
@@ -300,7 +324,7 @@ void particleGenerator::checkSolid
 
     if (spec.clamp)
     {
-        const scalar tol = 1e-9*dp_;
+        const scalar tol = 1e-9*spec.dp;
         std::vector<label>& clamped = body.addLabelField("clamped", 0);
         const std::vector<vec3>& position = body.position();
         label nClamped = 0;
@@ -332,7 +356,7 @@ void particleGenerator::checkSolid
             thinMemberTolerance, spec.material->nu, spec.material->plane));
     }
     const latticeMembers members =
-        findThinMembers(body.position(), dp_, nDimensions_, minLayers);
+        findThinMembers(body.position(), spec.dp, nDimensions_, minLayers);
     summary.thinnestLayers = members.thinnestLayers;
 
     if (!members.hasSecondNeighbours || (members.thinnestLayers >= 0
@@ -353,7 +377,7 @@ void particleGenerator::checkSolid
         }
         os << " has no second-neighbour bonds across it, so it has no"
            << " shear or bending stiffness: make the solid at least 2"
-           << " particles (2 dp = " << 2*dp_ << " m) thick everywhere";
+           << " particles (2 dp = " << 2*spec.dp << " m) thick everywhere";
         fatalIOError(spec.file, spec.line, os.str(), spec.name);
     }
 
@@ -374,7 +398,7 @@ void particleGenerator::checkSolid
                << " (docs/vcpm.md); " << minLayers << " layers give at most "
                << 100*thinMemberTolerance << " % at nu = "
                << spec.material->nu << ": refine dp to at most "
-               << dp_*members.thinnestLayers/minLayers << " m";
+               << spec.dp*members.thinnestLayers/minLayers << " m";
             warning(os.str(), spec.file, spec.line);
         }
     }
@@ -409,9 +433,9 @@ void particleGenerator::generate()
     bodies_.clear();
     summaries_.clear();
 
-    const scalar minDistance = dp_*(1 - overlapTolerance);
-    const scalar cellVolume = std::pow(dp_, nDimensions_);
-    std::vector<vec3> obstacles;    // solids, then walls too
+    // Solids, then walls too, by spacing: a node keeps (dp + dp_o)/2 from
+    // an obstacle particle of spacing dp_o.
+    std::map<scalar, std::vector<vec3>> obstacles;
 
     for (const bodyType type : buildOrder)
     {
@@ -423,8 +447,14 @@ void particleGenerator::generate()
         }
 
         // Built once per stage: walls avoid solids, fluids avoid both.
-        const pointLocator near(type == bodyType::solid
-            ? std::vector<vec3>() : obstacles, dp_);
+        std::vector<std::pair<scalar, pointLocator>> near;
+        if (type != bodyType::solid)
+        {
+            for (auto& [obstacleDp, points] : obstacles)
+            {
+                near.emplace_back(obstacleDp, pointLocator(points, dp_));
+            }
+        }
 
         for (const bodySpec& spec : specs_)
         {
@@ -434,16 +464,19 @@ void particleGenerator::generate()
             }
             const std::string what =
                 "body '" + spec.name + "' (" + bodyTypeName(type) + ")";
-            std::vector<vec3> nodes =
-                lattice(spec.origin, dp_, nDimensions_).fill(spec.shapes, what);
+            std::vector<vec3> nodes = lattice(spec.origin, spec.dp,
+                nDimensions_).fill(spec.shapes, what);
+            const scalar cellVolume = std::pow(spec.dp, nDimensions_);
 
             const std::size_t nNodes = nodes.size();
-            if (near.size())
+            for (const auto& [obstacleDp, locator] : near)
             {
+                const scalar minDistance =
+                    0.5*(spec.dp + obstacleDp)*(1 - overlapTolerance);
                 std::size_t kept = 0;
                 for (const vec3& p : nodes)
                 {
-                    if (!near.anyWithin(p, minDistance))
+                    if (!locator.anyWithin(p, minDistance))
                     {
                         nodes[kept++] = p;
                     }
@@ -465,7 +498,7 @@ void particleGenerator::generate()
                 }
                 else
                 {
-                    os << "no node of its lattice (spacing " << dp_
+                    os << "no node of its lattice (spacing " << spec.dp
                        << ", origin (" << spec.origin.x << ' '
                        << spec.origin.y << ' ' << spec.origin.z << "))"
                        << " lies inside its shapes"
@@ -475,7 +508,7 @@ void particleGenerator::generate()
                 fatalIOError(spec.file, spec.line, os.str(), spec.name);
             }
 
-            particleBody body(spec.name, type, nDimensions_, dp_);
+            particleBody body(spec.name, type, nDimensions_, spec.dp);
             body.resize(label(nodes.size()));
             std::copy(nodes.begin(), nodes.end(), body.position().begin());
             body.addVectorField("U", spec.U);
@@ -497,7 +530,8 @@ void particleGenerator::generate()
 
             if (type != bodyType::fluid)
             {
-                obstacles.insert(obstacles.end(), nodes.begin(), nodes.end());
+                std::vector<vec3>& o = obstacles[spec.dp];
+                o.insert(o.end(), nodes.begin(), nodes.end());
             }
             bodies_.push_back(std::move(body));
         }

@@ -21,7 +21,8 @@ const std::vector<std::string> writeControls
 
 const std::vector<std::string> types
 {
-    "probes", "freeSurfaceGauges", "forces", "energy", "surgeFront"
+    "probes", "freeSurfaceGauges", "forces", "energy", "surgeFront",
+    "solidPoints"
 };
 
 std::string listOf(const std::vector<std::string>& words)
@@ -220,6 +221,11 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
         {
             all.push_back(std::make_unique<surgeFront>
                 (name, dict, caseDir, startTimeName));
+        }
+        else if (type == "solidPoints")
+        {
+            all.push_back(std::make_unique<solidPoints>
+                (name, dict, caseDir, startTimeName, model, bodies));
         }
         else
         {

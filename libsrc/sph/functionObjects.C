@@ -349,7 +349,7 @@ forces::forces(std::string name, const dictionary& dict,
     std::vector<std::string> walls;
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
-        if (bodies[i].type == bodyType::wall)
+        if (bodies[i].type != bodyType::fluid)
         {
             walls.push_back(bodies[i].name);
             if (bodies[i].name == body)
@@ -372,11 +372,11 @@ forces::forces(std::string name, const dictionary& dict,
             if (b.name == body)
             {
                 what = "'" + body + "' is a " + bodyTypeName(b.type)
-                     + " body, not a wall";
+                     + " body, not a wall or a solid";
             }
         }
         dict.fatalAt("body", "Function object '" + this->name() + "': "
-            + what + ". Wall bodies: " + list);
+            + what + ". Wall and solid bodies: " + list);
     }
 }
 
@@ -401,7 +401,7 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
         const auto onWall = [&](const label w)
         {
             vec3 f{0, 0, 0};
-            if (pf.kind[w] != wallKind || pf.body[w] != body) return f;
+            if (pf.kind[w] == fluidKind || pf.body[w] != body) return f;
             const vec3 xw = pf.position[w];
             const vec3 vw = pf.velocity[w];
             const scalar mw = pf.mass[w];
@@ -517,6 +517,97 @@ std::vector<scalar> surgeFront::values(const solverSnapshot& s) const
 void surgeFront::writeHeader(std::ostream& os) const
 {
     os << "# Time front\n";
+}
+
+// * * * * * * * * * * * * * * * * solidPoints  * * * * * * * * * * * * * * //
+
+solidPoints::solidPoints(std::string name, const dictionary& dict,
+                         const std::filesystem::path& caseDir,
+                         const std::string& startTimeName,
+                         const sphModel& model,
+                         const std::vector<bodyInfo>& bodies)
+:
+    table(std::move(name), dict, caseDir, startTimeName, "displacement.dat"),
+    nDimensions_(model.nDimensions)
+{
+    dict.checkKeywords(keywords({"body", "points"}));
+    body_ = dict.get<std::string>("body");
+    std::string solids;
+    bool found = false;
+    for (const bodyInfo& b : bodies)
+    {
+        if (b.type != bodyType::solid) continue;
+        solids += (solids.empty() ? "" : " ") + b.name;
+        found = found || b.name == body_;
+    }
+    if (!found)
+    {
+        dict.fatalAt("body", "Function object '" + this->name() + "': there"
+            " is no solid body '" + body_ + "'. Solid bodies: (" + solids
+            + ")");
+    }
+    points_ = readPoints(dict, "points", this->name(), model);
+}
+
+
+std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
+{
+    const solidView* view = nullptr;
+    if (s.solids)
+    {
+        for (const solidView& v : *s.solids)
+        {
+            if (v.name == body_) view = &v;
+        }
+    }
+    if (!view)
+    {
+        fatalError("Function object '" + name() + "': solid '" + body_
+            + "' is not in the run");
+    }
+    const std::vector<vec3>& X = *view->reference;
+    const std::vector<vec3>& x = *view->position;
+    if (particles_.empty())
+    {
+        for (const vec3& p : points_)
+        {
+            label best = 0;
+            for (label i = 1; i < label(X.size()); ++i)
+            {
+                if (magSqr(X[i] - p) < magSqr(X[best] - p)) best = i;
+            }
+            particles_.push_back(best);
+            chosen_.push_back(X[best]);
+        }
+    }
+    std::vector<scalar> row;
+    for (const label i : particles_)
+    {
+        const vec3 u = x[i] - X[i];
+        row.push_back(u.x);
+        row.push_back(u.y);
+        if (nDimensions_ == 3) row.push_back(u.z);
+    }
+    return row;
+}
+
+
+void solidPoints::writeHeader(std::ostream& os) const
+{
+    os << "# Displacement x - X of solid " << body_ << " at the particles"
+       << " with reference positions X:\n";
+    for (std::size_t k = 0; k < chosen_.size(); ++k)
+    {
+        os << "#   point " << k << ": " << str(chosen_[k]) << " (asked "
+           << str(points_[k]) << ")\n";
+    }
+    os << "# Time";
+    for (std::size_t k = 0; k < chosen_.size(); ++k)
+    {
+        os << " ux" << k << " uy" << k;
+        if (nDimensions_ == 3) os << " uz" << k;
+    }
+    os << "\n";
 }
 
 } // End namespace functionObjects

@@ -51,6 +51,8 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
     invRho.resize(n);
     std::vector<std::uint8_t> newKind(n), newBody(n);
     std::vector<label> newId(n);
+    std::vector<label> newLink(link.empty() ? 0 : n);
+    const bool withLink = !link.empty();
     const label* o = order.data();
     parallelFor(openmpExec{}, n, [&](const label k)
     {
@@ -63,6 +65,7 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
         newKind[k] = kind[old];
         newBody[k] = body[old];
         newId[k] = id[old];
+        if (withLink) newLink[k] = link[old];
     });
     position.swap(velocity0);
     velocity.swap(acceleration);
@@ -72,6 +75,7 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
     kind.swap(newKind);
     body.swap(newBody);
     id.swap(newId);
+    link.swap(newLink);
     position.resize(n);
     velocity.resize(n);
     rho.resize(n);
@@ -92,7 +96,8 @@ particleView particleFields::view()
         acceleration.data(), drho.data(), invRho.data(),
         tau.empty() ? nullptr : tau.data(),
         shiftGradient.empty() ? nullptr : shiftGradient.data(),
-        divR.empty() ? nullptr : divR.data()
+        divR.empty() ? nullptr : divR.data(),
+        link.empty() ? nullptr : link.data()
     };
 }
 
@@ -104,6 +109,7 @@ std::size_t particleFields::bytesPerParticle() const
     b += sizeof(scalar);                          // viscous step term
     if (!tau.empty()) b += sizeof(symmTensor);
     if (!shiftGradient.empty()) b += sizeof(vec3) + sizeof(scalar);
+    if (!link.empty()) b += sizeof(label);
     return b;
 }
 

@@ -28,9 +28,10 @@ finish()
     [ "$nFailed" -eq 0 ]
 }
 
-# A scratch directory removed on exit.
+# A scratch directory removed on exit (kept when SPHVCPM_KEEP_SCRATCH is
+# set, for debugging).
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/sphvcpmTest.XXXXXX")
-trap 'rm -rf "$scratch"' EXIT
+[ -n "${SPHVCPM_KEEP_SCRATCH:-}" ] || trap 'rm -rf "$scratch"' EXIT
 
 : "${SPHVCPM_DIR:=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}"
 export SPHVCPM_DIR

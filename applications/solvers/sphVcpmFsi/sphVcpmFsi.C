@@ -9,7 +9,7 @@
 #include "argList.H"
 #include "error.H"
 #include "solidOnlySolver.H"
-#include "sphSolver.H"
+#include "fsiSolver.H"
 
 #include <iostream>
 
@@ -45,7 +45,7 @@ int main(int argc, char* argv[])
         }
         else
         {
-            sphSolver solver(args.casePath(), std::cout);
+            fsiSolver solver(args.casePath(), std::cout);
             solver.run();
         }
 

@@ -594,10 +594,6 @@ TEST(functionObjects, errorsNameTheEntry)
         expectMessage(err, {"water", "fluid", "tank"});
     }
     {
-        const auto err = error("f { type forces; body gate; }\n");
-        expectMessage(err, {"gate", "solid"});
-    }
-    {
         const auto err = error("f { type forces; }\n");
         expectMessage(err, {"body"});
     }

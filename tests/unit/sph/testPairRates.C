@@ -8,6 +8,10 @@
 // on and off: the accelerations, density rates and viscous step terms agree
 // to round-off, and the pair form gives the same bits serial and threaded.
 // Wall particles out of reach of the fluid (nearFluidOp) are skipped.
+// With the lower layers a moving solid instead of a wall, the solid
+// particles' rates (the reaction of the fluid's forces) agree in both
+// forms too, and the fluid and the solid together conserve momentum to
+// round-off.
 
 #include "cellList.H"
 #include "fluidInteractions.H"
@@ -40,7 +44,8 @@ struct cloud
     // wall particles, the deepest of them out of reach of the fluid.
     // Random velocity, density, pressure and SPS stress.
     cloud(int nDim_, int nx, int ny, int nz, int divisor, bool sps,
-          bool laminar, scalar support, unsigned seed)
+          bool laminar, scalar support, unsigned seed,
+          std::uint8_t lowKind = wallKind)
     :
         nDim(nDim_), dp(0.01), h(0.5*support*0.01)
     {
@@ -49,6 +54,7 @@ struct cloud
         if (nDim == 2) nz = 1;
         n = label(nx)*ny*nz;
         f.resize(n, sps, false);
+        if (lowKind == solidKind) f.link.resize(n);
         label k = 0;
         for (int z = 0; z < nz; ++z)
         for (int y = 0; y < ny; ++y)
@@ -59,9 +65,10 @@ struct cloud
             f.position[k] = {(x + 0.5)*dp + jitter*u(gen),
                              (y + 0.5)*dp + jitter*u(gen),
                              nDim == 3 ? (z + 0.5)*dp + jitter*u(gen) : 0};
-            f.kind[k] = wall ? wallKind : fluidKind;
-            f.velocity[k] = wall ? vec3{0, 0, 0}
+            f.kind[k] = wall ? lowKind : fluidKind;
+            f.velocity[k] = wall && lowKind == wallKind ? vec3{0, 0, 0}
               : vec3{u(gen), u(gen), nDim == 3 ? u(gen) : 0};
+            if (!f.link.empty()) f.link[k] = k;
             f.rho[k] = 1000*(1 + 0.01*u(gen));
             f.p[k] = 1e4*u(gen);
             f.mass[k] = 1000*std::pow(dp, nDim);
@@ -125,6 +132,8 @@ rates gather(cloud& cl, const Kernel& kernel)
     for (label i = 0; i < cl.n; ++i)
     {
         if (cl.f.kind[i] != fluidKind) visc[i] = 0;
+        // The gather form leaves walls' rates as they were.
+        if (cl.f.kind[i] == wallKind) cl.f.acceleration[i] = {0, 0, 0};
     }
     return {cl.f.acceleration, cl.f.drho, visc};
 }
@@ -136,6 +145,47 @@ rates pairs(Exec exec, cloud& cl, const Kernel& kernel)
     pairRates(exec, kernel, cl.cells, cl.nearFluid.data(), cl.f.view(), cl.c,
               visc.data());
     return {cl.f.acceleration, cl.f.drho, visc};
+}
+
+// Sum of m a over all particles, against the sum of |m a|.
+void expectMomentumConserved(const cloud& cl, const rates& r)
+{
+    vec3 sum{0, 0, 0};
+    scalar scale = 0;
+    label nSolid = 0;
+    for (label i = 0; i < cl.n; ++i)
+    {
+        const vec3 f = cl.f.mass[i]*r.acceleration[i];
+        sum += f;
+        scale += mag(f);
+        nSolid += cl.f.kind[i] == solidKind && mag(f) > 0;
+    }
+    ASSERT_GT(nSolid, 10);
+    EXPECT_LT(mag(sum), 1e-13*scale);
+}
+
+// The solid's rates in both forms and the momentum balance.
+template<class Kernel>
+void compareSolid(int nDim, int divisor, bool sps, bool laminar)
+{
+    SCOPED_TRACE(::testing::Message() << "solid, " << nDim << "D, cells of 2h/"
+        << divisor << (sps ? ", SPS" : "")
+        << (laminar ? ", laminar" : ", artificial"));
+    cloud cl(nDim, 14, 16, 14, divisor, sps, laminar, 3, 11u + divisor,
+             solidKind);
+    const Kernel kernel(cl.h, nDim);
+    const rates a = gather(cl, kernel);
+    const rates b = pairs(openmpExec{}, cl, kernel);
+    scalar aScale = 0, aErr = 0;
+    for (label i = 0; i < cl.n; ++i)
+    {
+        aScale = std::max(aScale, mag(a.acceleration[i]));
+        aErr = std::max(aErr, mag(a.acceleration[i] - b.acceleration[i]));
+    }
+    ASSERT_GT(aScale, 0);
+    EXPECT_LT(aErr, 1e-12*aScale);
+    expectMomentumConserved(cl, a);
+    expectMomentumConserved(cl, b);
 }
 
 template<class Kernel>
@@ -206,6 +256,20 @@ TEST(pairRates, equalsGatherForm)
                 compare<wendlandC2Kernel>(nDim, divisor, sps, false);
                 compare<cubicSplineKernel>(nDim, divisor, sps, true);
             }
+        }
+    }
+}
+
+
+TEST(pairRates, solidReactionConservesMomentum)
+{
+    for (const int nDim : {2, 3})
+    {
+        for (const int divisor : {1, 2})
+        {
+            compareSolid<wendlandC2Kernel>(nDim, divisor, false, true);
+            compareSolid<wendlandC2Kernel>(nDim, divisor, true, false);
+            compareSolid<cubicSplineKernel>(nDim, divisor, false, true);
         }
     }
 }

@@ -1,7 +1,7 @@
 /*---------------------------------------------------------------------------*\
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
-#include "sphSolver.H"
+#include "fsiSolver.H"
 #include "argList.H"
 #include "error.H"
 #include "fluidInteractions.H"
@@ -43,7 +43,7 @@ std::string str(const vec3& v)
 
 // * * * * * * * * * * * * * * * * Construction * * * * * * * * * * * * * * //
 
-sphSolver::sphSolver(const fs::path& caseDir, std::ostream& log)
+fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log)
 :
     caseDir_(caseDir),
     log_(log),
@@ -103,7 +103,7 @@ sphSolver::sphSolver(const fs::path& caseDir, std::ostream& log)
 }
 
 
-sphSolver::~sphSolver() = default;
+fsiSolver::~fsiSolver() = default;
 
 
 std::string startTimeName(const fs::path& caseDir,
@@ -145,7 +145,7 @@ std::string startTimeName(const fs::path& caseDir,
 }
 
 
-void sphSolver::readStartTime()
+void fsiSolver::readStartTime()
 {
     startTimeName_ = startTimeName(caseDir_, control_);
 
@@ -168,13 +168,6 @@ void sphSolver::readStartTime()
     label nTotal = 0;
     for (const particleBody& b : bodies)
     {
-        if (b.type() == bodyType::solid)
-        {
-            fatalError("Body " + b.name() + " of time " + startTimeName_
-                + " is a solid beside a fluid: SPH-VCPM coupling is not yet"
-                  " available; run the solid alone (no fluid body) or the"
-                  " fluid with wall bodies");
-        }
         if (b.type() == bodyType::fluid && dp == 0)
         {
             dp = b.dp();
@@ -199,7 +192,20 @@ void sphSolver::readStartTime()
     }
     for (const particleBody& b : bodies)
     {
-        if (std::fabs(b.dp() - dp) > 1e-9*dp)
+        if (b.type() == bodyType::solid)
+        {
+            // Multi-resolution: dp_s = dp_f/r (theory.md §3.6).
+            const scalar r = dp/b.dp();
+            const scalar rInt = std::round(r);
+            if (rInt < 1 || rInt > 4 || std::fabs(r - rInt) > 1e-6*r)
+            {
+                fatalError("Solid " + b.name() + " has dp " + str(b.dp())
+                    + " but the fluid has dp " + str(dp) + ": a solid's"
+                      " spacing must be the fluid's divided by 1, 2, 3 or"
+                      " 4 (its ratio is " + str(r) + ")");
+            }
+        }
+        else if (std::fabs(b.dp() - dp) > 1e-9*dp)
         {
             fatalError("Body " + b.name() + " has dp " + str(b.dp())
                 + " but the fluid has dp " + str(dp) + ": fluid and wall"
@@ -211,6 +217,19 @@ void sphSolver::readStartTime()
 
     particles_.resize(nTotal, model_.sps,
                       model_.shifting != shiftingType::none);
+    solids_ = std::make_unique<solidBodySet>(caseDir_, startTimeName_, bodies,
+                                             freshStart_, model_.g, log_);
+    if (!solids_->empty())
+    {
+        coupling_ = std::make_unique<fluidSolidCoupling>(*solids_);
+        particles_.link.assign(nTotal, -1);
+        for (const solidBody& b : solids_->bodies())
+        {
+            solidViews_.push_back({b.name, &b.solid->reference(),
+                                   &b.solid->position});
+        }
+    }
+    label nextSolid = 0;   // the solids' order in the coupling arrays
     const scalar defaultMass = model_.rho0*std::pow(dp, nDim);
     label k = 0;
     for (std::size_t b = 0; b < bodies.size(); ++b)
@@ -223,6 +242,25 @@ void sphSolver::readStartTime()
         const bool hasU = body.hasField("U");
         const bool hasRho = body.hasField("rho");
         const bool hasMass = body.hasField("mass");
+        if (body.type() == bodyType::solid)
+        {
+            // A moving wall to the fluid, with the fluid-side mass
+            // rho0_f dp_s^d (theory.md §3.3).
+            const scalar fluidSideMass =
+                model_.rho0*std::pow(body.dp(), nDim);
+            for (label i = 0; i < n; ++i, ++k, ++nextSolid)
+            {
+                particles_.position[k] = x[i];
+                particles_.velocity[k] = coupling_->meanVelocity[nextSolid];
+                particles_.rho[k] = model_.rho0;
+                particles_.mass[k] = fluidSideMass;
+                particles_.kind[k] = solidKind;
+                particles_.body[k] = std::uint8_t(b);
+                particles_.id[k] = ids[i];
+                particles_.link[k] = nextSolid;
+            }
+            continue;
+        }
         for (label i = 0; i < n; ++i, ++k)
         {
             particles_.position[k] = x[i];
@@ -252,7 +290,7 @@ void sphSolver::readStartTime()
 }
 
 
-void sphSolver::setSoundSpeed()
+void fsiSolver::setSoundSpeed()
 {
     // Fluid height H along gravity and the largest initial speed.
     const scalar gMag = mag(model_.g);
@@ -310,7 +348,7 @@ void sphSolver::setSoundSpeed()
 }
 
 
-void sphSolver::setHydrostaticDensity()
+void fsiSolver::setHydrostaticDensity()
 {
     // rho = rho0 (1 + rho0 |g| (top - z)/B)^(1/gamma) below the top of each
     // fluid body (its highest particle + dp/2), so that a still fluid
@@ -337,7 +375,7 @@ void sphSolver::setHydrostaticDensity()
 }
 
 
-void sphSolver::setDomain()
+void fsiSolver::setDomain()
 {
     vec3 lo, hi;
     if (model_.userDomain)
@@ -385,7 +423,7 @@ void sphSolver::setDomain()
 
 // * * * * * * * * * * * * * * * * * * Steps  * * * * * * * * * * * * * * * //
 
-void sphSolver::sortParticles()
+void fsiSolver::sortParticles()
 {
     const label n = particles_.size();
     buildCellList(openmpExec{}, grid_, particles_.position.data(), n, cells_);
@@ -400,7 +438,8 @@ void sphSolver::sortParticles()
             const label i = cells_.order[k];
             if (particles_.kind[i] != fluidKind)
             {
-                fatalError("Wall particle " + describeParticle(i)
+                fatalError(std::string(particles_.kind[i] == wallKind
+                    ? "Wall" : "Solid") + " particle " + describeParticle(i)
                     + " lies outside the domain bounds " + str(grid_.origin)
                     + " .. " + str(model_.domainMax)
                     + ": enlarge the domain of system/sphSchemes");
@@ -434,7 +473,7 @@ void sphSolver::sortParticles()
 }
 
 
-void sphSolver::updateWalls()
+void fsiSolver::updateWalls()
 {
     const particleView v = particles_.view();
     const scalar support2 = 4*model_.h*model_.h;
@@ -443,7 +482,8 @@ void sphSolver::updateWalls()
         using K = decltype(kernel);
         parallelFor(openmpExec{}, v.n, adamiWallOp<K>{kernel, grid_,
             cells_.cellStart.data(), v, eos_, support2, model_.g,
-            nearFluid_.data()});
+            nearFluid_.data(),
+            coupling_ ? coupling_->meanAcceleration.data() : nullptr});
         if (model_.sps)
         {
             const scalar filter = model_.dp
@@ -457,7 +497,7 @@ void sphSolver::updateWalls()
 }
 
 
-void sphSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
+void fsiSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
                              scalar& maxVel2, label& firstBad)
 {
     const particleView v = particles_.view();
@@ -509,7 +549,7 @@ void sphSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
 }
 
 
-scalar sphSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
+scalar fsiSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
                                const scalar maxVel2)
 {
     scalar dt = control_.deltaT;
@@ -536,7 +576,7 @@ scalar sphSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
 }
 
 
-void sphSolver::step()
+void fsiSolver::step()
 {
     sortParticles();
     particleView v = particles_.view();
@@ -549,6 +589,12 @@ void sphSolver::step()
     {
         blowUp(bad, "a non-finite acceleration or density rate", false,
                false, 0);
+    }
+
+    if (coupling_)
+    {
+        coupling_->collectFluidForce(v, true);
+        coupling_->saveStepStart();
     }
 
     const scalar dt = chooseDeltaT(maxAcc2, maxVisc, maxVel2);
@@ -570,6 +616,7 @@ void sphSolver::step()
     }
 
     parallelFor(openmpExec{}, v.n, predictorOp{v, eos_, model_.g, dt});
+    if (coupling_) advanceSolids(true, dt);
 
     updateWalls();
     computeRates(maxAcc2, maxVisc, maxVel2, bad);
@@ -589,6 +636,11 @@ void sphSolver::step()
         blowUp(bad, "a non-finite or non-positive density, velocity or"
             " position", true, true, dt);
     }
+    if (coupling_)
+    {
+        coupling_->collectFluidForce(v, false);
+        advanceSolids(false, dt);
+    }
 
     deltaT0_ = deltaT_;
     deltaT_ = dt;
@@ -604,9 +656,48 @@ void sphSolver::step()
 }
 
 
+void fsiSolver::advanceSolids(const bool firstHalf, const scalar dt)
+{
+    const label n = firstHalf ? coupling_->advanceFirstHalf(0.5*dt)
+                              : coupling_->advanceSecondHalf(0.5*dt);
+    solidSubSteps_ += n;
+    const std::string bad = solids_->firstNonFinite();
+    if (!bad.empty())
+    {
+        // The solid particle in the fluid's set, for the diagnosis.
+        label worst = 0;
+        for (label i = 0; i < particles_.size(); ++i)
+        {
+            if (particles_.kind[i] != solidKind) continue;
+            const vec3 x = coupling_->position[particles_.link[i]];
+            if (!isFinite(x)) { worst = i; break; }
+        }
+        blowUp(worst, "a non-finite position in the solid sub-cycle (" + bad
+            + "); the fluid force on it was "
+            + str(coupling_->fluidForce[particles_.link[worst]]) + " N",
+            true, !firstHalf, dt);
+    }
+    coupling_->toParticles(particles_.view());
+}
+
+
+vec3 fsiSolver::momentum() const
+{
+    vec3 sum{0, 0, 0};
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        if (particles_.kind[i] == fluidKind)
+        {
+            sum += particles_.mass[i]*particles_.velocity[i];
+        }
+    }
+    return coupling_ ? sum + coupling_->momentum() : sum;
+}
+
+
 // * * * * * * * * * * * * * * * * * Blow-up  * * * * * * * * * * * * * * * //
 
-std::string sphSolver::describeParticle(const label i) const
+std::string fsiSolver::describeParticle(const label i) const
 {
     std::ostringstream os;
     os << "id " << particles_.id[i] << " of body "
@@ -616,7 +707,7 @@ std::string sphSolver::describeParticle(const label i) const
 }
 
 
-void sphSolver::blowUp(const label particle, const std::string& what,
+void fsiSolver::blowUp(const label particle, const std::string& what,
                        const bool undoPredictor, const bool undoCorrector,
                        const scalar dt)
 {
@@ -646,6 +737,11 @@ void sphSolver::blowUp(const label particle, const std::string& what,
             v.rho[i] = v.rho0[i];
         }
     }
+    if (coupling_ && undoPredictor)
+    {
+        coupling_->restoreStepStart();
+        coupling_->toParticles(v);
+    }
     // Only a finite state is worth writing.
     bool finite = true;
     for (label i = 0; i < v.n && finite; ++i)
@@ -673,7 +769,7 @@ void sphSolver::blowUp(const label particle, const std::string& what,
 
 // * * * * * * * * * * * * * * * * * * Output * * * * * * * * * * * * * * * //
 
-double sphSolver::countInteractions()
+double fsiSolver::countInteractions()
 {
     const particleView v = particles_.view();
     const scalar support2 = 4*model_.h*model_.h;
@@ -693,16 +789,19 @@ double sphSolver::countInteractions()
 }
 
 
-void sphSolver::write()
+void fsiSolver::write()
 {
     const label n = particles_.size();
     std::vector<label> counts(bodies_.size(), 0);
     for (label i = 0; i < n; ++i) ++counts[particles_.body[i]];
 
+    // Fluid and wall bodies from the particle set (solids below).
     std::vector<particleBody> out;
-    out.reserve(bodies_.size());
+    std::vector<int> outIndex(bodies_.size(), -1);
     for (std::size_t b = 0; b < bodies_.size(); ++b)
     {
+        if (bodies_[b].type == bodyType::solid) continue;
+        outIndex[b] = int(out.size());
         out.emplace_back(bodies_[b].name, bodies_[b].type,
                          model_.nDimensions, bodies_[b].dp);
         out.back().resize(counts[b]);
@@ -712,19 +811,37 @@ void sphSolver::write()
         out.back().addScalarField("mass");
     }
     std::vector<label> fill(bodies_.size(), 0);
+    std::vector<scalar> solidPressure(coupling_ ? coupling_->size() : 0);
     label maxId = 0;
     for (label i = 0; i < n; ++i)
     {
-        const int b = particles_.body[i];
-        particleBody& body = out[b];
-        const label k = fill[b]++;
+        maxId = std::max(maxId, particles_.id[i]);
+        if (particles_.kind[i] == solidKind)
+        {
+            solidPressure[particles_.link[i]] = particles_.p[i];
+            continue;
+        }
+        particleBody& body = out[outIndex[particles_.body[i]]];
+        const label k = fill[particles_.body[i]]++;
         body.position()[k] = particles_.position[i];
         body.id()[k] = particles_.id[i];
         body.vectorField("U")[k] = particles_.velocity[i];
         body.scalarField("rho")[k] = particles_.rho[i];
         body.scalarField("p")[k] = particles_.p[i];
         body.scalarField("mass")[k] = particles_.mass[i];
-        maxId = std::max(maxId, particles_.id[i]);
+    }
+
+    // The solids' own fields, with the pressure the fluid puts on them.
+    std::vector<particleBody> solidsOut =
+        solids_->output(model_.nDimensions, maxId);
+    for (std::size_t b = 0; b < solidsOut.size(); ++b)
+    {
+        std::vector<scalar>& p = solidsOut[b].addScalarField("p");
+        for (label i = 0; i < solidsOut[b].size(); ++i)
+        {
+            p[i] = solidPressure[coupling_->index(b, i)];
+        }
+        out.push_back(std::move(solidsOut[b]));
     }
     for (particleBody& body : out) body.setNextId(maxId + 1);
 
@@ -737,10 +854,10 @@ void sphSolver::write()
 }
 
 
-void sphSolver::executeFunctions()
+void fsiSolver::executeFunctions()
 {
     const solverSnapshot s{particles_, cells_, model_, bodies_, time_,
-                           timeIndex_, deltaT_};
+                           timeIndex_, deltaT_, &solidViews_};
     for (auto& f : functions_)
     {
         f->execute(s);
@@ -748,7 +865,7 @@ void sphSolver::executeFunctions()
 }
 
 
-void sphSolver::run()
+void fsiSolver::run()
 {
     schedule_.emplace(control_, time_);
 
@@ -801,6 +918,12 @@ void sphSolver::run()
         << " G interactions/s (" << str(meanPairs/std::max<label>(1,
             particles_.size()), 4) << " neighbours per particle, 2 force"
            " passes per step), " << openmpThreads() << " threads\n";
+    if (coupling_)
+    {
+        log_<< "    solids: " << coupling_->size() << " particles, "
+            << str(solidSubSteps_/std::max<label>(1, stepsRun_), 4)
+            << " solid steps per fluid step\n";
+    }
     for (const bodyInfo& b : bodies_)
     {
         if (b.nRemoved > 0)

@@ -1,0 +1,170 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "fluidSolidCoupling.H"
+#include "parallel.H"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sphvcpm
+{
+
+fluidSolidCoupling::fluidSolidCoupling(solidBodySet& solids)
+:
+    solids_(solids)
+{
+    offsets_.push_back(0);
+    for (const solidBody& b : solids_.bodies())
+    {
+        offsets_.push_back(offsets_.back() + b.solid->size());
+    }
+    const label n = size();
+    position.resize(n);
+    meanVelocity.resize(n);
+    meanAcceleration.assign(n, vec3{0, 0, 0});
+    fluidForce.assign(n, vec3{0, 0, 0});
+    fluidForceAtStart.assign(n, vec3{0, 0, 0});
+    heldForce_.resize(n);
+    copyPositions();
+    // Until a step has moved them, the solids' own velocity.
+    for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
+    {
+        const vcpmSolid& s = *solids_.bodies()[b].solid;
+        std::copy(s.velocity.begin(), s.velocity.end(),
+                  meanVelocity.begin() + offsets_[b]);
+    }
+}
+
+
+void fluidSolidCoupling::copyPositions()
+{
+    for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
+    {
+        const vcpmSolid& s = *solids_.bodies()[b].solid;
+        std::copy(s.position.begin(), s.position.end(),
+                  position.begin() + offsets_[b]);
+    }
+}
+
+
+void fluidSolidCoupling::collectFluidForce(const particleView& v,
+                                           const bool atStepStart)
+{
+    parallelFor(openmpExec{}, v.n, fluidForceOnSolidOp{v, fluidForce.data()});
+    if (atStepStart) fluidForceAtStart = fluidForce;
+}
+
+
+label fluidSolidCoupling::advance(const scalar dt,
+                                  const std::vector<vec3>& force)
+{
+    label most = 0;
+    const std::vector<vec3> start = position;
+    for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
+    {
+        solidBody& body = solids_.bodies()[b];
+        vcpmSolid& s = *body.solid;
+        std::copy(force.begin() + offsets_[b],
+                  force.begin() + offsets_[b + 1], s.externalForce.begin());
+        // The sub-step: the largest that divides dt and is stable.
+        const label n = std::max<label>(1,
+            label(std::ceil(dt/body.stableDeltaT*(1 - 1e-12))));
+        const scalar subDt = dt/n;
+        s.computeForces(openmpExec{});
+        for (label k = 0; k < n; ++k)
+        {
+            s.step(openmpExec{}, subDt);
+        }
+        most = std::max(most, n);
+    }
+    copyPositions();
+
+    // Time averages over this half step; the acceleration over the two
+    // half steps' midpoints.
+    const scalar span = lastHalf_ > 0 ? 0.5*(dt + lastHalf_) : dt;
+    const label n = size();
+    for (label i = 0; i < n; ++i)
+    {
+        const vec3 mean = (1/dt)*(position[i] - start[i]);
+        meanAcceleration[i] = (1/span)*(mean - meanVelocity[i]);
+        meanVelocity[i] = mean;
+    }
+    lastHalf_ = dt;
+    return most;
+}
+
+
+label fluidSolidCoupling::advanceFirstHalf(const scalar dt)
+{
+    return advance(dt, fluidForceAtStart);
+}
+
+
+label fluidSolidCoupling::advanceSecondHalf(const scalar dt)
+{
+    const label n = size();
+    for (label i = 0; i < n; ++i)
+    {
+        heldForce_[i] = scalar(2)*fluidForce[i] - fluidForceAtStart[i];
+    }
+    return advance(dt, heldForce_);
+}
+
+
+void fluidSolidCoupling::toParticles(const particleView& v) const
+{
+    parallelFor(openmpExec{}, v.n, solidToParticlesOp{v, position.data(),
+        meanVelocity.data()});
+}
+
+
+void fluidSolidCoupling::saveStepStart()
+{
+    startPosition_.clear();
+    startVelocity_.clear();
+    for (const solidBody& b : solids_.bodies())
+    {
+        const vcpmSolid& s = *b.solid;
+        startPosition_.insert(startPosition_.end(), s.position.begin(),
+                              s.position.end());
+        startVelocity_.insert(startVelocity_.end(), s.velocity.begin(),
+                              s.velocity.end());
+    }
+    startMeanVelocity_ = meanVelocity;
+    startMeanAcceleration_ = meanAcceleration;
+}
+
+
+void fluidSolidCoupling::restoreStepStart()
+{
+    for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
+    {
+        vcpmSolid& s = *solids_.bodies()[b].solid;
+        std::copy(startPosition_.begin() + offsets_[b],
+                  startPosition_.begin() + offsets_[b + 1],
+                  s.position.begin());
+        std::copy(startVelocity_.begin() + offsets_[b],
+                  startVelocity_.begin() + offsets_[b + 1],
+                  s.velocity.begin());
+    }
+    copyPositions();
+    meanVelocity = startMeanVelocity_;
+    meanAcceleration = startMeanAcceleration_;
+}
+
+
+vec3 fluidSolidCoupling::momentum() const
+{
+    vec3 sum{0, 0, 0};
+    for (const solidBody& b : solids_.bodies())
+    {
+        const vcpmSolid& s = *b.solid;
+        vec3 bodySum{0, 0, 0};
+        for (const vec3& u : s.velocity) bodySum += u;
+        sum += s.material().mass*bodySum;
+    }
+    return sum;
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,230 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "solidBodySet.H"
+#include "dictionary.H"
+#include "dimensionSet.H"
+#include "error.H"
+#include "timeDirectory.H"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+namespace sphvcpm
+{
+
+namespace fs = std::filesystem;
+
+vcpmMaterial solidBodySet::readMaterial
+(
+    const std::string& name,
+    const int nDimensions,
+    const scalar dp,
+    const scalar massRho,
+    scalar& damping
+) const
+{
+    const fs::path file = caseDir_/"constant/solidProperties";
+    if (!fs::is_regular_file(file))
+    {
+        fatalError("Solid " + name + ": " + file.string() + " does not exist;"
+            " it gives the material as " + name + " { E ...; nu ...; }");
+    }
+    const dictionary all = dictionary::fromFile(file);
+    const dictionary& props = all.subDict(name);
+    // rho of the sub-dictionary, else the one generateParticles gave the
+    // particles' mass (a body-level rho).
+    const scalar rho = props.found("rho")
+      ? props.getDimensioned<scalar>("rho", dimensions::density()) : massRho;
+    damping = props.getOrDefault<scalar>("damping", 0);
+    if (!(damping >= 0))
+    {
+        props.fatalAt("damping", "Keyword 'damping' of solid '" + name
+            + "': the mass-proportional damping (1/s) must be >= 0");
+    }
+    return vcpmMaterial::read(props, name, nDimensions, rho, dp);
+}
+
+
+solidBodySet::solidBodySet
+(
+    const fs::path& caseDir,
+    const std::string& startTimeName,
+    const std::vector<particleBody>& start,
+    const bool freshStart,
+    const vec3& g,
+    std::ostream& log
+)
+:
+    caseDir_(caseDir)
+{
+    const bool anySolid = std::any_of(start.begin(), start.end(),
+        [](const particleBody& b) { return b.type() == bodyType::solid; });
+    if (!anySolid) return;
+
+    // The reference lattice: the start itself, or 0/ on a restart.
+    std::vector<particleBody> zero;
+    if (!freshStart)
+    {
+        if (!fs::is_directory(caseDir_/"0"))
+        {
+            fatalError("Restart from time " + startTimeName + " needs 0/,"
+                " the reference lattice of the solids' bonds");
+        }
+        zero = readTimeDirectory(caseDir_, "0");
+    }
+
+    for (const particleBody& b : start)
+    {
+        if (b.type() != bodyType::solid) continue;
+        const int nDim = b.nDimensions();
+        const label n = b.size();
+        const scalar massRho = b.hasField("mass") && n
+          ? b.scalarField("mass")[0]/std::pow(b.dp(), nDim) : 0;
+        scalar damping = 0;
+        const vcpmMaterial mat = readMaterial(b.name(), nDim, b.dp(),
+                                              massRho, damping);
+
+        std::vector<vec3> reference = b.position();
+        if (!freshStart)
+        {
+            auto it = std::find_if(zero.begin(), zero.end(),
+                [&](const particleBody& z) { return z.name() == b.name(); });
+            if (it == zero.end())
+            {
+                fatalError("Solid " + b.name() + " is not in 0/: a restart"
+                    " takes its reference lattice from 0/" + b.name());
+            }
+            std::map<label, label> index;
+            for (label i = 0; i < it->size(); ++i) index[it->id()[i]] = i;
+            for (label i = 0; i < n; ++i)
+            {
+                auto k = index.find(b.id()[i]);
+                if (k == index.end())
+                {
+                    fatalError("Solid " + b.name() + ": particle id "
+                        + std::to_string(b.id()[i]) + " of time "
+                        + startTimeName + " is not in 0/" + b.name());
+                }
+                reference[i] = it->position()[k->second];
+            }
+        }
+
+        solidBody sb{b.name(), b.dp(), b.id(),
+                     std::make_unique<vcpmSolid>(mat, reference),
+                     mat.stableTimeStep(damping > 0 ? 0.3 : 0.5)};
+        vcpmSolid& s = *sb.solid;
+        s.position = b.position();
+        if (b.hasField("U")) s.velocity = b.vectorField("U");
+        label nClamped = 0;
+        if (b.hasField("clamped"))
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                s.clamped[i] = b.labelField("clamped")[i] != 0;
+                nClamped += s.clamped[i];
+            }
+        }
+        s.gravity = g;
+        s.damping = damping;
+
+        log << "    " << b.name() << " (solid): " << n << " particles, "
+            << nClamped << " clamped, " << s.bonds().nBonds() << " bonds\n"
+            << "        E = " << mat.E << " Pa, nu = " << mat.nu
+            << ", rho = " << mat.rho << " kg/m^3, "
+            << (nDim == 2 ? (mat.plane == planeModel::planeStrain
+                ? "square2D planeStrain" : "square2D planeStress")
+                : "simpleCubic3D")
+            << ", damping " << damping << " 1/s\n"
+            << "        c_p = " << mat.pWaveSpeed << " m/s, stable deltaT = "
+            << sb.stableDeltaT << " s\n";
+        bodies_.push_back(std::move(sb));
+    }
+}
+
+
+scalar solidBodySet::stableDeltaT() const
+{
+    scalar dt = 0;
+    for (const solidBody& b : bodies_)
+    {
+        dt = dt > 0 ? std::min(dt, b.stableDeltaT) : b.stableDeltaT;
+    }
+    return dt;
+}
+
+
+label solidBodySet::nParticles() const
+{
+    label n = 0;
+    for (const solidBody& b : bodies_) n += b.solid->size();
+    return n;
+}
+
+
+std::vector<particleBody> solidBodySet::output(const int nDimensions,
+                                               label& maxId)
+{
+    std::vector<particleBody> out;
+    for (solidBody& b : bodies_)
+    {
+        vcpmSolid& s = *b.solid;
+        const label n = s.size();
+        out.emplace_back(b.name, bodyType::solid, nDimensions, b.dp);
+        particleBody& o = out.back();
+        o.resize(n);
+        o.position() = s.position;
+        o.id() = b.id;
+        o.addVectorField("U") = s.velocity;
+        o.addScalarField("mass", s.material().mass);
+        std::vector<label>& clamped = o.addLabelField("clamped", 0);
+        for (label i = 0; i < n; ++i) clamped[i] = s.clamped[i];
+        o.addVectorField("displacement") = s.displacement();
+
+        std::vector<stressTensor> sigma;
+        s.stress(openmpExec{}, sigma);
+        // No tensor field type yet: the independent components.
+        auto component = [&](const char* name, scalar stressTensor::*c)
+        {
+            std::vector<scalar>& f = o.addScalarField(name);
+            for (label i = 0; i < n; ++i) f[i] = sigma[i].*c;
+        };
+        component("stressXX", &stressTensor::xx);
+        component("stressXY", &stressTensor::xy);
+        component("stressYY", &stressTensor::yy);
+        if (nDimensions == 3)
+        {
+            component("stressXZ", &stressTensor::xz);
+            component("stressYZ", &stressTensor::yz);
+            component("stressZZ", &stressTensor::zz);
+        }
+        o.addScalarField("vonMises") = s.vonMisesOf(sigma);
+        for (label id : b.id) maxId = std::max(maxId, id);
+    }
+    return out;
+}
+
+
+std::string solidBodySet::firstNonFinite() const
+{
+    for (const solidBody& b : bodies_)
+    {
+        const std::vector<vec3>& x = b.solid->position;
+        for (std::size_t i = 0; i < x.size(); ++i)
+        {
+            if (std::isfinite(x[i].x + x[i].y + x[i].z)) continue;
+            std::ostringstream os;
+            os << "particle id " << b.id[i] << " of solid " << b.name
+               << " (reference position (" << b.solid->reference()[i].x
+               << " " << b.solid->reference()[i].y << " "
+               << b.solid->reference()[i].z << "))";
+            return os.str();
+        }
+    }
+    return {};
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,125 @@
+#!/bin/bash
+# sphVcpmFsi with a fluid and an elastic solid. Without gravity and walls,
+# a water block thrown at a free rubber block (and, in a second run, at a
+# block of half the spacing: multi-resolution r = 2) must keep the total
+# momentum of fluid and solid to round-off: the solid receives exactly the
+# reaction of the fluid's forces over each step. The solid must also have
+# been pushed (it takes momentum from the fluid), no fluid particle may
+# end inside the solid, and the log reports the sub-steps.
+source "$(dirname "$0")/testLib.sh"
+source "$(dirname "$0")/fieldTools.sh"
+
+makeCase()   # makeCase <dir> <solid dp>
+{
+    local c="$1"
+    mkdir -p "$c/system" "$c/constant"
+    cat > "$c/system/generateParticlesDict" <<DICT
+nDimensions 2;
+dp          0.01;
+bodies
+{
+    water { type fluid; U (1 0 0); shapes { b { shape box; min (0 0 0); max (0.1 0.1 0); } } }
+    block
+    {
+        type solid;
+        dp   $2;
+        shapes { b { shape box; min (0.105 0.02 0); max (0.145 0.08 0); } }
+    }
+}
+DICT
+    cat > "$c/constant/solidProperties" <<'DICT'
+block { rho 1100; E 2e6; nu 0.3; lattice square2D; plane planeStrain; }
+DICT
+    cat > "$c/constant/fluidProperties" <<'DICT'
+rho0 1000; nu 1e-6; c0 40; gamma 7; turbulence off;
+DICT
+    cat > "$c/constant/g" <<'DICT'
+dimensions [0 1 -2 0 0 0 0];
+value      (0 0 0);
+DICT
+    cat > "$c/system/sphSchemes" <<'DICT'
+kernel wendlandC2; hOverDp 1.5;
+densityDiffusion { type fourtakas; delta 0.1; }
+viscosity { type laminar; }
+shifting { type none; }
+boundary adami;
+DICT
+    cat > "$c/system/controlDict" <<'DICT'
+application     sphVcpmFsi;
+startFrom       latestTime;
+startTime       0;
+stopAt          endTime;
+endTime         0.03;
+deltaT          1e-5;
+adjustTimeStep  yes;
+maxCo           0.2;
+maxDeltaT       1e-3;
+writeControl    adjustableRunTime;
+writeInterval   0.03;
+writeFormat     ascii;
+writePrecision  17;
+logInterval     1000;
+functions { blockForce { type forces; body block; } }
+DICT
+}
+
+# Total momentum "px py scale" of the water and the block in time
+# directory $2 (scale: the sum of m |u_x|).
+momentum()
+{
+    local b
+    for b in water block; do
+        paste -d ' ' <(fieldValues "$1/$2/$b/mass") <(fieldValues "$1/$2/$b/U")
+    done | awk '{ px += $1*$2; py += $1*$3; s += $1*($2 < 0 ? -$2 : $2) }
+                END { printf "%.17g %.17g %.17g\n", px, py, s }'
+}
+
+for r in 1 2; do
+    c="$scratch/fsi$r"
+    makeCase "$c" "$(python3 -c "print(0.01/$r)")"
+    generateParticles -case "$c" > "$scratch/log.gen$r" 2>&1
+    check "r=$r: generateParticles" [ $? -eq 0 ]
+    sphVcpmFsi -case "$c" > "$scratch/log.run$r" 2>&1
+    check "r=$r: sphVcpmFsi runs fluid and solid" [ $? -eq 0 ]
+    log="$scratch/log.run$r"
+    expectIn "r=$r: log names the solid" "$log" "block \(solid\)"
+    expectIn "r=$r: log reports the solid steps" "$log" "solid steps per fluid step"
+    expectIn "r=$r: End" "$log" "^End"
+    check "r=$r: forces on the block written" \
+        [ -s "$c/postProcessing/blockForce/0/force.dat" ]
+    for f in position U displacement vonMises p; do
+        check "r=$r: 0.03/block/$f written" [ -f "$c/0.03/block/$f" ]
+    done
+    read p0x p0y s0 <<< "$(momentum "$c" 0)"
+    read p1x p1y s1 <<< "$(momentum "$c" 0.03)"
+    check "r=$r: total momentum conserved to round-off ($p0x $p0y -> $p1x $p1y)" \
+        python3 -c "import sys; sys.exit(0 if abs($p1x-$p0x) < 1e-12*$s0 and abs($p1y-$p0y) < 1e-12*$s0 else 1)"
+    # The block took momentum from the water.
+    pb=$(python3 - "$c/0.03/block" <<'PY'
+import re, sys
+t = open(sys.argv[1] + '/U').read(); t = t[t.index('value'):]
+u = [float(m) for m in re.findall(r'^\(([-\d.e+]+) ', t, re.M)]
+print(sum(u)/len(u))
+PY
+)
+    check "r=$r: the block moves with the water (mean u $pb m/s)" \
+        python3 -c "import sys; sys.exit(0 if $pb > 0.05 else 1)"
+    # No water inside the block: every water particle stays outside the
+    # block's particle hull, shrunk by a quarter of the solid spacing.
+    check "r=$r: no water inside the block" python3 - "$c/0.03" "$r" <<'PY'
+import re, sys
+d, r = sys.argv[1], int(sys.argv[2])
+def vec(f):
+    t = open(f).read(); t = t[t.index('value'):]
+    return [tuple(map(float, m)) for m in re.findall(
+        r'^\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)$', t, re.M)]
+b = vec(d + '/block/position'); w = vec(d + '/water/position')
+q = 0.25*0.01/r
+x0 = min(p[0] for p in b) + q; x1 = max(p[0] for p in b) - q
+y0 = min(p[1] for p in b) + q; y1 = max(p[1] for p in b) - q
+inside = [p for p in w if x0 < p[0] < x1 and y0 < p[1] < y1]
+print(len(inside), "water particles inside the block")
+sys.exit(1 if inside else 0)
+PY
+done
+finish
