@@ -2,6 +2,11 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 // vcpmThinMembers [-relax] [-layers "2 4 8"] [-nu 0.3 -plane stress|strain]
+//                 [-surface on|off|both]
+//
+// -surface: the surface correction of bondList.H (default both: each case
+// without, then with; docs/vcpm.md "Surface correction"). BEAM_L=0.8 in the
+// environment makes the beam longer (L/H = 40) to separate the clamp root.
 //
 // Bending stiffness of the square VCPM lattice against the number of layers
 // n through the thickness (theory.md §2.8), from the static tip deflection of
@@ -36,7 +41,7 @@ using namespace sphvcpm;
 namespace
 {
 
-const scalar L = 0.2, H = 0.02, E = 2e6, rho = 1000, g = 0.0981;
+const scalar L = std::getenv("BEAM_L") ? std::atof(std::getenv("BEAM_L")) : 0.2, H = 0.02, E = 2e6, rho = 1000, g = 0.0981;
 const label nClamp = 2;
 
 // Static displacement by CG on K u = m g; K v = -f(X + s v)/s with s so small
@@ -125,11 +130,12 @@ int relax(vcpmSolid& s, std::vector<vec3>& u)
 }
 
 void run(const std::vector<int>& layers, const scalar nu,
-         const planeModel plane, const bool dynamic)
+         const planeModel plane, const bool dynamic, const bool surface)
 {
-    std::printf("\nnu = %g, %s, %s\n", nu,
+    std::printf("\nnu = %g, %s, %s, surface correction %s\n", nu,
         plane == planeModel::planeStress ? "plane stress" : "plane strain",
-        dynamic ? "damped dynamic relaxation" : "static (CG)");
+        dynamic ? "damped dynamic relaxation" : "static (CG)",
+        surface ? "on" : "off");
     std::printf("| n | particles | iterations | w_tip (m) | Timoshenko (m) "
                 "| error | EI_lattice/EI | fit | c | s |\n"
                 "|---|---|---|---|---|---|---|---|---|---|\n");
@@ -137,7 +143,8 @@ void run(const std::vector<int>& layers, const scalar nu,
     {
         const scalar l0 = H/n;
         const label nL = label(std::lround(L/l0));
-        const vcpmMaterial m(E, nu, rho, vcpmLattice::square2D, l0, plane, 1);
+        vcpmMaterial m(E, nu, rho, vcpmLattice::square2D, l0, plane, 1);
+        m.surfaceCorrection = surface;
         vcpmSolid s(m, cantileverLattice(nL, n, nClamp, l0));
         for (label p = 0; p < s.size(); ++p)
         {
@@ -186,6 +193,7 @@ void run(const std::vector<int>& layers, const scalar nu,
 int main(int argc, char* argv[])
 {
     bool dynamic = false;
+    std::vector<bool> surfaces{false, true};
     std::vector<int> layers{2, 3, 4, 5, 6, 8, 10, 12, 16, 20};
     std::vector<std::pair<scalar, planeModel>> cases
     {
@@ -197,6 +205,12 @@ int main(int argc, char* argv[])
     {
         const std::string a = argv[i];
         if (a == "-relax") dynamic = true;
+        else if (a == "-surface" && i + 1 < argc)
+        {
+            const std::string v = argv[++i];
+            surfaces = v == "both" ? std::vector<bool>{false, true}
+                                   : std::vector<bool>{v == "on"};
+        }
         else if (a == "-layers" && i + 1 < argc)
         {
             layers.clear();
@@ -224,6 +238,9 @@ int main(int argc, char* argv[])
     }
     std::printf("Cantilever L = %g m, H = %g m, E = %g Pa, rho = %g, g = %g, "
                 "%ld clamped columns\n", L, H, E, rho, g, long(nClamp));
-    for (const auto& c : cases) run(layers, c.first, c.second, dynamic);
+    for (const auto& c : cases)
+    {
+        for (const bool on : surfaces) run(layers, c.first, c.second, dynamic, on);
+    }
     return 0;
 }

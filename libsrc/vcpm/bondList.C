@@ -28,7 +28,8 @@ std::int64_t cellKey(const std::int64_t a, const std::int64_t b,
 } // End anonymous namespace
 
 
-bondList::bondList(const std::vector<vec3>& X, const scalar l0)
+bondList::bondList(const std::vector<vec3>& X, const scalar l0,
+                   const bool surfaceCorrection, const scalar gamma)
 {
     const label n = label(X.size());
     const scalar cut1 = 1.01*l0;
@@ -130,6 +131,75 @@ bondList::bondList(const std::vector<vec3>& X, const scalar l0)
     for (label p = 0; p < n; ++p)
     {
         if (nBondsOf(p, 1) == 0) withoutSecondLayer_.push_back(p);
+    }
+
+    weight_.assign(2*std::size_t(nBonds()), 1);
+    pairFactor_.assign(nBonds(), 1);
+    if (!surfaceCorrection) return;
+
+    // The partner of p along reference offset d, or -1.
+    const scalar tol2 = 1e-4*l0*l0;
+    auto neighbour = [&](const label p, const vec3& d) -> label
+    {
+        for (label a = start_[p]; a < start_[p + 1]; ++a)
+        {
+            const label k = adjacency_[a];
+            const label q = first_[k] == p ? second_[k] : first_[k];
+            if (magSqr(X[q] - X[p] - d) < tol2) return q;
+        }
+        return -1;
+    };
+    auto bondBetween = [&](const label p, const label q) -> label
+    {
+        for (label a = start_[p]; a < start_[p + 1]; ++a)
+        {
+            const label k = adjacency_[a];
+            if (first_[k] == q || second_[k] == q) return k;
+        }
+        return -1;
+    };
+
+    // End weights: 2 where the opposite bond at that end is missing (the
+    // mirror image stands in for it), else 1.
+    for (label k = 0; k < nBonds(); ++k)
+    {
+        const vec3 d = X[second_[k]] - X[first_[k]];
+        if (neighbour(first_[k], -1.0*d) < 0) weight_[2*k] = 2;
+        if (neighbour(second_[k], d) < 0) weight_[2*k + 1] = 2;
+    }
+
+    // Second-moment shift. Candidate normals: the axis directions of the
+    // layer-1 bonds the body has (so a 2D lattice has no z normal).
+    std::vector<vec3> axes;
+    for (int dir = 0; dir < 3; ++dir)
+    {
+        vec3 m{0, 0, 0};
+        m[dir] = l0;
+        for (label k = 0; k < nBonds(); ++k)
+        {
+            const vec3 d = X[second_[k]] - X[first_[k]];
+            if (layer_[k] == 0 && std::abs(std::abs(d[dir]) - l0) < 0.01*l0)
+            {
+                axes.push_back(m);
+                axes.push_back(-1.0*m);
+                break;
+            }
+        }
+    }
+    for (label k = 0; k < nBonds(); ++k)
+    {
+        if (layer_[k] != 0) continue;
+        const label i = first_[k], j = second_[k];
+        const vec3 d = X[j] - X[i];
+        for (const vec3& m : axes)
+        {
+            if (std::abs(dot(d, m)) > 0.01*l0*l0) continue;
+            if (neighbour(i, m) >= 0 || neighbour(j, m) >= 0) continue;
+            pairFactor_[k] += gamma;
+            const label i1 = neighbour(i, -1.0*m), j1 = neighbour(j, -1.0*m);
+            const label k1 = i1 < 0 || j1 < 0 ? -1 : bondBetween(i1, j1);
+            if (k1 >= 0) pairFactor_[k1] -= gamma;
+        }
     }
 }
 

@@ -130,10 +130,14 @@ vcpmMaterial vcpmMaterial::read
     // Missing E or nu: the lookup's error names the file and keyword.
     const scalar E = props.getDimensioned<scalar>("E", dimensions::pressure());
     const scalar nu = props.get<scalar>("nu");
+    const bool surface = props.getOrDefault<bool>("surfaceCorrection",
+                                                  defaultSurfaceCorrection);
     try
     {
-        return vcpmMaterial(E, nu, rho, latticeNamed(latticeName), l0,
-                            planeNamed(plane));
+        vcpmMaterial m(E, nu, rho, latticeNamed(latticeName), l0,
+                       planeNamed(plane));
+        m.surfaceCorrection = surface;
+        return m;
     }
     catch (const FatalError& err)
     {

@@ -22,7 +22,8 @@ vcpmSolid::vcpmSolid(const vcpmMaterial& material,
     stretchSum(2*reference.size(), 0),
     material_(material),
     reference_(reference),
-    bonds_(reference, material.l0)
+    bonds_(reference, material.l0, material.surfaceCorrection,
+           material.surfaceCorrection ? surfaceShift(material) : 0)
 {
     const std::size_t thin = bonds_.withoutSecondLayer().size();
     if (thin)
@@ -34,6 +35,50 @@ vcpmSolid::vcpmSolid(const vcpmMaterial& material,
            << "); the solid is too thin there to carry shear";
         warning(os.str());
     }
+}
+
+
+scalar surfaceShift(const vcpmMaterial& m)
+{
+    // A strip nRef = 4 layers thick along y, 5 columns along x (and 5 along z
+    // in 3D), bent affinely: u = (k x y, -k x^2/2 - nu' k y^2/2, 0), the
+    // exact pure-bending field of a plane-strain (3D: cylindrical plate)
+    // or plane-stress beam. The energy of the middle column is linear in
+    // gamma; gamma makes it the continuum 1/2 E' I k^2 per column.
+    const int nRef = 4, nx = 5, nz = m.nDim() == 3 ? 5 : 1;
+    const scalar l0 = m.l0, kappa = 1e-6/l0;
+    const bool stress2D = m.nDim() == 2 && m.plane == planeModel::planeStress;
+    const scalar nuP = stress2D ? m.nu : m.nu/(1 - m.nu);
+    const scalar Eb = stress2D ? m.E : m.E/(1 - m.nu*m.nu);
+    std::vector<vec3> X, x;
+    std::vector<label> middle;
+    for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < nRef; ++j)
+    for (int i = 0; i < nx; ++i)
+    {
+        const vec3 p{(i - nx/2)*l0, (j - 0.5*(nRef - 1))*l0, (k - nz/2)*l0};
+        if (i == nx/2 && k == nz/2) middle.push_back(label(X.size()));
+        X.push_back(p);
+        x.push_back(p + kappa*vec3{p.x*p.y,
+                                   -0.5*(p.x*p.x + nuP*p.y*p.y), 0});
+    }
+    const vcpmConstants c{{2*m.k1, 2*m.k2}, {m.T, m.T}};
+    auto energy = [&](const scalar gamma)
+    {
+        const bondList b(X, l0, true, gamma);
+        std::vector<scalar> S(2*X.size());
+        parallelFor(serialExec{}, label(X.size()),
+                    stretchSumOp{b.view(), x.data(), S.data()});
+        const elasticEnergyOp U{b.view(), c, x.data(), S.data()};
+        scalar sum = 0;
+        for (const label p : middle) sum += U(p);
+        return sum;
+    };
+    const scalar depth = m.nDim() == 3 ? l0 : m.thickness;
+    const scalar H = nRef*l0;
+    const scalar exact = 0.5*Eb*depth*H*H*H/12*kappa*kappa*l0;
+    const scalar U0 = energy(0);
+    return (exact - U0)/(energy(1) - U0);
 }
 
 

@@ -61,9 +61,12 @@ vcpmSolid makeSolid(const vcpmMaterial& m, const int nx, const int ny,
 }
 
 vcpmMaterial material(const vcpmLattice lattice, const planeModel plane,
-                      const scalar nu, const scalar l0 = 0.01)
+                      const scalar nu, const scalar l0 = 0.01,
+                      const bool surface = false)
 {
-    return vcpmMaterial(2e6, nu, 1100, lattice, l0, plane, 0.1);
+    vcpmMaterial m(2e6, nu, 1100, lattice, l0, plane, 0.1);
+    m.surfaceCorrection = surface;
+    return m;
 }
 
 const vcpmLattice sq = vcpmLattice::square2D;
@@ -144,6 +147,7 @@ struct latticeCase
     vcpmLattice lattice;
     planeModel plane;
     scalar nu;
+    bool surface = false;       // surface correction
 };
 
 } // End anonymous namespace
@@ -249,7 +253,7 @@ class vcpmLatticeCases : public ::testing::TestWithParam<latticeCase> {};
 TEST_P(vcpmLatticeCases, forceIsMinusEnergyGradient)
 {
     const latticeCase c = GetParam();
-    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid s = makeSolid(m, 5, 4, 4);
     perturb(s.position, 0.05*m.l0, m.nDim(), 7);
     s.computeForces(serialExec{});
@@ -278,7 +282,7 @@ TEST_P(vcpmLatticeCases, forceIsMinusEnergyGradient)
 TEST_P(vcpmLatticeCases, momentumConserved)
 {
     const latticeCase c = GetParam();
-    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid s = makeSolid(m, 6, 5, 4);
     perturb(s.position, 0.05*m.l0, m.nDim(), 11);
     s.computeForces(openmpExec{});
@@ -300,7 +304,7 @@ TEST_P(vcpmLatticeCases, momentumConserved)
 TEST_P(vcpmLatticeCases, rigidRotationIsStressFree)
 {
     const latticeCase c = GetParam();
-    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid s = makeSolid(m, 5, 4, 4);
     // 90 degrees about z (2D) or about (1, 1, 1)/sqrt(3) (3D), plus a shift.
     for (vec3& x : s.position)
@@ -327,7 +331,7 @@ TEST_P(vcpmLatticeCases, rigidRotationIsStressFree)
 TEST_P(vcpmLatticeCases, serialEqualsOpenMP)
 {
     const latticeCase c = GetParam();
-    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid a = makeSolid(m, 9, 8, 7);
     perturb(a.position, 0.02*m.l0, m.nDim(), 3);
     vcpmSolid b = a;
@@ -347,7 +351,7 @@ TEST_P(vcpmLatticeCases, serialEqualsOpenMP)
 TEST_P(vcpmLatticeCases, affineStrainGivesContinuumStressAndEnergy)
 {
     const latticeCase c = GetParam();
-    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid s = makeSolid(m, 7, 7, 7);
     const scalar a = 1e-8;
     scalar e[3][3] = {{3*a, 1.5*a, -a}, {1.5*a, -2*a, 0.5*a}, {-a, 0.5*a, a}};
@@ -392,7 +396,7 @@ TEST_P(vcpmLatticeCases, affineStrainGivesContinuumStressAndEnergy)
 TEST_P(vcpmLatticeCases, uniaxialStressPoissonContraction)
 {
     const latticeCase c = GetParam();
-    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid s = makeSolid(m, 7, 7, 7);
     const scalar eps = 1e-8;
     const bool strain2D = m.nDim() == 2 && m.plane == pStrain;
@@ -431,7 +435,7 @@ TEST_P(vcpmLatticeCases, uniaxialStressPoissonContraction)
 TEST_P(vcpmLatticeCases, energyBoundedAtStableStep)
 {
     const latticeCase c = GetParam();
-    const vcpmMaterial m = material(c.lattice, c.plane, c.nu);
+    const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid s = makeSolid(m, 8, 6, 5);
     perturb(s.position, 1e-6*m.l0, m.nDim(), 5);
     const scalar dt = m.stableTimeStep();
@@ -615,4 +619,187 @@ TEST(vcpmSolid, thinMemberStiffnessError)
     EXPECT_EQ(thinMemberStiffnessError(1, 0.3, pStress), -1);
     const label n5 = minimumLayers(0.05, 0.3, pStress);
     EXPECT_EQ(n5, 18);
+}
+
+
+// * * * * * * * * * * * * *  Surface correction  * * * * * * * * * * * * * //
+
+// The force, momentum, rotation, patch and energy tests with the surface
+// correction on (mirror weights and the second-moment shift at every face
+// of the block).
+INSTANTIATE_TEST_SUITE_P
+(
+    surfaceCorrected, vcpmLatticeCases,
+    ::testing::Values
+    (
+        latticeCase{sc, pStrain, 0.0, true}, latticeCase{sc, pStrain, 0.3, true},
+        latticeCase{sc, pStrain, 0.45, true},
+        latticeCase{sq, pStrain, 0.0, true}, latticeCase{sq, pStrain, 0.3, true},
+        latticeCase{sq, pStrain, 0.45, true},
+        latticeCase{sq, pStress, 0.3, true}, latticeCase{sq, pStress, 0.45, true}
+    )
+);
+
+namespace
+{
+
+// Tip-column centreline deflection of the relaxed 2D cantilever of set A
+// (L = 0.2, H = 0.02, E = 2 MPa, self-weight at g = 0.0981, plane strain,
+// n layers, 2 clamped columns) over Timoshenko at that column's x, minus 1.
+scalar cantileverError(const scalar nu, const int n, const bool surface)
+{
+    const scalar L = 0.2, H = 0.02, g = 0.0981;
+    const scalar l0 = H/n;
+    vcpmMaterial m(2e6, nu, 1000, sq, l0, pStrain, 1);
+    m.surfaceCorrection = surface;
+    vcpmSolid s(m, cantileverLattice(label(std::lround(L/l0)), n, 2, l0));
+    for (label p = 0; p < s.size(); ++p)
+    {
+        s.clamped[p] = s.reference()[p].x < 0;
+    }
+    s.gravity = {0, -g, 0};
+    const scalar EI = m.E/(1 - nu*nu)*H*H*H/12;
+    s.damping = 2*1.8751*1.8751/(L*L)*std::sqrt(EI/(m.rho*H));
+    const scalar dt = m.stableTimeStep(0.5);
+    s.computeForces(openmpExec{});
+    scalar vMax = 0;
+    for (int it = 0; it < 200000; ++it)
+    {
+        s.step(openmpExec{}, dt);
+        if (it % 1000 == 999)
+        {
+            vMax = 0;
+            for (const vec3& v : s.velocity) vMax = std::max(vMax, mag(v));
+            if (vMax < 1e-9) break;
+        }
+    }
+    EXPECT_LT(vMax, 1e-9);
+    scalar w = 0;
+    label nTip = 0;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        if (s.reference()[p].x > L - l0)
+        {
+            w += s.position[p].y - s.reference()[p].y;
+            ++nTip;
+        }
+    }
+    w /= nTip;
+    const scalar kGA = 5.0/6.0*m.E/(2*(1 + nu))*H;
+    const scalar wT = cantileverDeflection(L - 0.5*l0, L, -m.rho*g*H, EI, kGA);
+    return w/wT - 1;
+}
+
+} // End anonymous namespace
+
+// Issue 4's 3 % on the static tip at 5 layers, which the plain lattice
+// misses by 19-24 % (staticCantileverSetA): with the surface correction
+// measured +2.26 % (nu = 0.3) and +2.19 % (nu = 0.4) by the static solve of
+// benchmarks/vcpmThinMembers.
+TEST(vcpmSurfaceCorrection, cantileverFiveLayers)
+{
+    for (const scalar nu : {0.3, 0.4})
+    {
+        const scalar on = cantileverError(nu, 5, true);
+        std::printf("cantilever n = 5, nu = %g, plane strain: %+.2f %% "
+                    "against Timoshenko with the surface correction\n",
+                    nu, 100*on);
+        EXPECT_LT(std::abs(on), 0.03);
+    }
+}
+
+// The calibration in 3D: a simple-cubic plate strip 5 layers thick, bent
+// affinely (cylindrical bending, eps_zz = 0): the energy of its middle
+// column is within 2 % of the continuum 1/2 E/(1 - nu^2) I k^2 with the
+// correction (measured +1.2, +1.4, +0.1 % at nu = 0, 0.3, 0.45), 10-16 %
+// low without at nu = 0, 0.3 (+3 % at 0.45).
+TEST(vcpmSurfaceCorrection, simpleCubicPlateStrip)
+{
+    const int nx = 5, ny = 5, nz = 5;
+    for (const scalar nu : {0.0, 0.3, 0.45})
+    {
+        scalar ratio[2];
+        for (const bool surface : {false, true})
+        {
+            const vcpmMaterial m = material(sc, pStrain, nu, 0.01, surface);
+            vcpmSolid s(m, block(nx, ny, nz, m.l0));
+            const scalar kappa = 1e-6/m.l0, nuP = nu/(1 - nu);
+            const vec3 c{nx/2*m.l0, 0.5*(ny - 1)*m.l0, nz/2*m.l0};
+            for (label p = 0; p < s.size(); ++p)
+            {
+                const vec3 X = s.reference()[p] - c;
+                s.position[p] = s.reference()[p] + kappa*vec3{X.x*X.y,
+                    -0.5*(X.x*X.x + nuP*X.y*X.y), 0};
+            }
+            s.elasticEnergy(serialExec{});
+            const elasticEnergyOp U{s.bonds().view(), s.constants(),
+                                    s.position.data(), s.stretchSum.data()};
+            scalar sum = 0;
+            for (label p = 0; p < s.size(); ++p)
+            {
+                const vec3 X = s.reference()[p] - c;
+                if (std::abs(X.x) + std::abs(X.z) < 0.1*m.l0) sum += U(p);
+            }
+            const scalar H = ny*m.l0;
+            ratio[surface] = sum/(0.5*m.E/(1 - nu*nu)*H*H*H/12*kappa*kappa
+                                  *m.l0*m.l0);
+        }
+        std::printf("3D plate strip n = 5, nu = %g: bending energy / "
+                    "continuum %.4f (off), %.4f (on)\n", nu, ratio[0],
+                    ratio[1]);
+        // Calibrated at 4 layers: 1-1.5 % stiff at 5 (as in 2D).
+        EXPECT_NEAR(ratio[1], 1, 0.02);
+        EXPECT_LT(std::abs(ratio[1] - 1), std::abs(ratio[0] - 1));
+    }
+}
+
+// The mirror weights alone (no shift): under a uniform strain every face
+// particle of a free block has the bulk energy density (edges and corners
+// also miss bond pairs, bond and opposite both, which no mirror restores).
+TEST(vcpmSurfaceCorrection, uniformStrainEnergyOnFaces)
+{
+    for (const vcpmLattice lat : {sc, sq})
+    {
+        const vcpmMaterial m = material(lat, pStrain, 0.3, 0.01, true);
+        vcpmSolid s = makeSolid(m, 6, 5, 4);
+        const scalar a = 1e-8;
+        const scalar e[3][3] = {{3*a, 1.5*a, lat == sc ? -a : 0},
+                                {1.5*a, -2*a, lat == sc ? 0.5*a : 0},
+                                {lat == sc ? -a : 0, lat == sc ? 0.5*a : 0,
+                                 lat == sc ? a : 0}};
+        for (label p = 0; p < s.size(); ++p)
+        {
+            const vec3 X = s.reference()[p];
+            for (int i = 0; i < 3; ++i)
+            {
+                s.position[p][i] =
+                    X[i] + e[i][0]*X.x + e[i][1]*X.y + e[i][2]*X.z;
+            }
+        }
+        const bondList b(s.reference(), m.l0, true, 0);
+        parallelFor(serialExec{}, s.size(), stretchSumOp{b.view(),
+            s.position.data(), s.stretchSum.data()});
+        const elasticEnergyOp U{b.view(), s.constants(),
+                                s.position.data(), s.stretchSum.data()};
+        const stressTensor t = hooke(m, e);
+        const scalar W = 0.5*(t.xx*e[0][0] + t.yy*e[1][1] + t.zz*e[2][2])
+                       + t.xy*e[0][1] + t.xz*e[0][2] + t.yz*e[1][2];
+        scalar err = 0;
+        const int nd = m.nDim();
+        const int size[3] = {6, 5, 4};
+        for (label p = 0; p < s.size(); ++p)
+        {
+            int onBoundary = 0;
+            for (int d = 0; d < nd; ++d)
+            {
+                const long i = std::lround(s.reference()[p][d]/m.l0);
+                onBoundary += i == 0 || i == size[d] - 1;
+            }
+            if (onBoundary > 1) continue;
+            err = std::max(err, std::abs(U(p)/m.cellVolume - W)/W);
+        }
+        std::printf("uniform strain, %s: max face particle energy error %.1e\n",
+                    lat == sc ? "SC" : "square", err);
+        EXPECT_LT(err, 1e-6);
+    }
 }

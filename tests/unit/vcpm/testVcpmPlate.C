@@ -53,8 +53,10 @@ plateResult runPlate(const int nLayers, const scalar Vf, const scalar Texp,
 {
     const scalar L = 0.2, H = 0.02, E = 2e6, nu = 0.3975, rho = 1000;
     const scalar l0 = H/nLayers;
-    const vcpmMaterial m(E, nu, rho, vcpmLattice::square2D, l0,
-                         planeModel::planeStrain, 1);
+    vcpmMaterial m(E, nu, rho, vcpmLattice::square2D, l0,
+                   planeModel::planeStrain, 1);
+    // SPHVCPM_PLATE_SURFACE=1: with the surface correction (docs table).
+    m.surfaceCorrection = std::getenv("SPHVCPM_PLATE_SURFACE") != nullptr;
     // Two columns inside the support, clamped: the clamp carries moment.
     vcpmSolid s(m, cantileverLattice(label(std::lround(L/l0)), nLayers, 2, l0));
     const scalar c0 = std::sqrt(E/(3*(1 - 2*nu))/rho);
