@@ -136,6 +136,11 @@ void run(const std::vector<int>& layers, const scalar nu,
         plane == planeModel::planeStress ? "plane stress" : "plane strain",
         dynamic ? "damped dynamic relaxation" : "static (CG)",
         surface ? "on" : "off");
+    if (surface)
+    {
+        const vcpmMaterial m(E, nu, rho, vcpmLattice::square2D, H/4, plane, 1);
+        std::printf("surface shift gamma = %.4f\n", surfaceShift(m));
+    }
     std::printf("| n | particles | iterations | w_tip (m) | Timoshenko (m) "
                 "| error | EI_lattice/EI | fit | c | s |\n"
                 "|---|---|---|---|---|---|---|---|---|---|\n");
@@ -182,7 +187,7 @@ void run(const std::vector<int>& layers, const scalar nu,
         std::printf("| %d | %ld | %d | %.5e | %.5e | %+.2f %% | %.4f | %.4f | %.3f "
                     "| %.1f |\n", n, long(s.size()), it, w, wT,
                     100*(w/wT - 1), ratio,
-                    1 + thinMemberStiffnessError(n, nu, plane), c, sec);
+                    1 + thinMemberStiffnessError(n, nu, plane, surface), c, sec);
         std::fflush(stdout);
     }
 }

@@ -353,7 +353,7 @@ void particleGenerator::checkSolid
     if (bending)
     {
         minLayers = std::max<label>(minLayers, minimumLayers(
-            thinMemberTolerance, spec.material->nu, spec.material->plane));
+            thinMemberTolerance, *spec.material));
     }
     const latticeMembers members =
         findThinMembers(body.position(), spec.dp, nDimensions_, minLayers);
@@ -384,8 +384,7 @@ void particleGenerator::checkSolid
     if (bending && members.thinnestLayers >= 0)
     {
         const scalar error = thinMemberStiffnessError(
-            scalar(members.thinnestLayers), spec.material->nu,
-            spec.material->plane);
+            scalar(members.thinnestLayers), *spec.material);
         if (std::abs(error) > thinMemberTolerance)
         {
             const vec3& p = body.position()[members.where];
@@ -397,7 +396,9 @@ void particleGenerator::checkSolid
                << " stiffness is expected " << 100*error << " % off"
                << " (docs/vcpm.md); " << minLayers << " layers give at most "
                << 100*thinMemberTolerance << " % at nu = "
-               << spec.material->nu << ": refine dp to at most "
+               << spec.material->nu << " (surface correction "
+               << (spec.material->surfaceCorrection ? "on" : "off")
+               << "): refine dp to at most "
                << spec.dp*members.thinnestLayers/minLayers << " m";
             warning(os.str(), spec.file, spec.line);
         }

@@ -665,7 +665,9 @@ TEST(particleGenerator, clampedSolid)
     }
     EXPECT_EQ(n, 2*5);
     EXPECT_EQ(gen.summaries().front().nClamped, 10);
-    EXPECT_EQ(gen.summaries().front().thinnestLayers, 5);
+    // Only members under the 5 % minimum are searched: 4 layers with the
+    // surface correction (the default), so the 5-layer gate is none.
+    EXPECT_EQ(gen.summaries().front().thinnestLayers, -1);
     std::ostringstream os;
     gen.printSummary(os);
     EXPECT_NE(os.str().find("200 particles"), std::string::npos);
@@ -682,17 +684,42 @@ TEST(particleGenerator, clampedSolid)
 
 TEST(particleGenerator, thinSolidWarns)
 {
-    // 5 layers at nu = 0.4 plane stress: -20 % or so, 19 layers for 5 %.
-    testCase c(gateDict("(0.05 0.4 0)", "(-1 0.38 0)"), "",
+    // Surface correction on (the default): 3 layers at nu = 0.4 plane
+    // stress are about -10 % off, 4 layers give 5 %.
+    testCase c(gateDict("(0.03 0.4 0)", "(-1 0.38 0)"), "",
         "gate { rho 1100; E 12e6; nu 0.4; plane planeStress; }\n");
     particleGenerator gen(c.path());
     testing::internal::CaptureStderr();
     gen.generate();
-    const std::string err = testing::internal::GetCapturedStderr();
-    const label minLayers = minimumLayers(0.05, 0.4, planeModel::planeStress);
+    std::string err = testing::internal::GetCapturedStderr();
+    label minLayers = minimumLayers(0.05, 0.4, planeModel::planeStress, true);
+    EXPECT_EQ(minLayers, 4);
+    EXPECT_NE(err.find("Solid 'gate': its thinnest member is 3 layers"),
+              std::string::npos) << err;
+    EXPECT_NE(err.find("4 layers give at most 5 % at nu = 0.4 (surface"
+                       " correction on)"), std::string::npos) << err;
+
+    // 5 layers: no warning with the correction, about -20 % without it.
+    testCase five(gateDict("(0.05 0.4 0)", "(-1 0.38 0)"), "",
+        "gate { rho 1100; E 12e6; nu 0.4; plane planeStress; }\n");
+    particleGenerator gen5(five.path());
+    testing::internal::CaptureStderr();
+    gen5.generate();
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+
+    testCase off(gateDict("(0.05 0.4 0)", "(-1 0.38 0)"), "",
+        "gate { rho 1100; E 12e6; nu 0.4; plane planeStress;"
+        " surfaceCorrection off; }\n");
+    particleGenerator genOff(off.path());
+    testing::internal::CaptureStderr();
+    genOff.generate();
+    err = testing::internal::GetCapturedStderr();
+    minLayers = minimumLayers(0.05, 0.4, planeModel::planeStress, false);
+    EXPECT_EQ(minLayers, 19);
     EXPECT_NE(err.find("Solid 'gate': its thinnest member is 5 layers"),
               std::string::npos) << err;
-    EXPECT_NE(err.find(std::to_string(minLayers) + " layers give at most 5 %"),
+    EXPECT_NE(err.find(std::to_string(minLayers) + " layers give at most 5 %"
+                       " at nu = 0.4 (surface correction off)"),
               std::string::npos) << err;
 
     // Thick enough: no warning.

@@ -468,10 +468,13 @@ TEST_P(vcpmLatticeCases, energyBoundedAtStableStep)
 // bottom layers clamped, relaxes under its own weight to the top
 // displacement of the discrete chain, rho g l0^2 N (N + 1)/(2 E) for N free
 // layers, within 1 % (measured -0.73 %: the free sides are slightly soft,
-// theory.md §2.8).
+// theory.md §2.8). The chain formula is the plain lattice's, so the surface
+// correction is off here (with it the mirror-weighted top face makes the
+// column 1.2 % stiffer than the chain; it is no longer a chain).
 TEST(vcpmSolid, dampedColumnUnderGravity)
 {
-    const vcpmMaterial m(1e6, 0.0, 1000, sq, 0.01, pStrain, 1);
+    vcpmMaterial m(1e6, 0.0, 1000, sq, 0.01, pStrain, 1);
+    m.surfaceCorrection = false;
     vcpmSolid s(m, block(6, 22, 1, m.l0));
     for (label p = 0; p < s.size(); ++p)
     {
@@ -510,6 +513,118 @@ TEST(vcpmSolid, dampedColumnUnderGravity)
     EXPECT_NEAR(uTop/exact, 1, 0.01);
 }
 
+// Issue 4's patch test on the default path (surface correction on): a free
+// 2D block, 40 x 8 particles, pulled by a uniform traction sigma0 on its
+// two end columns (force sigma0 l0 t per particle) and relaxed with
+// damping. Over its middle half (every particle, the free faces included)
+// the virial stress must be uniform, sigma_xx = sigma0 and sigma_yy =
+// sigma_xy = 0 within 1 % of sigma0, and the strains those of uniaxial
+// stress within 1 %: eps_xx = sigma0/E', Poisson contraction -eps_yy/eps_xx
+// = nu (plane stress) or nu/(1 - nu) (plane strain). Without the
+// correction (printed only) the faces are soft and the stress is not
+// uniform.
+namespace
+{
+
+struct tensionResult
+{
+    bool converged;
+    int steps;
+    scalar stressError, axialError, poissonError;
+};
+
+tensionResult uniformTension(const scalar nu, const planeModel plane,
+                             const bool surface)
+{
+    const int nx = 40, ny = 8;
+    vcpmMaterial m(2e6, nu, 1000, sq, 0.01, plane, 1);
+    m.surfaceCorrection = surface;
+    vcpmSolid s(m, block(nx, ny, 1, m.l0));
+    const scalar sigma0 = 1e-6*m.E;
+    const scalar Lx = (nx - 1)*m.l0;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        const long i = std::lround(s.reference()[p].x/m.l0);
+        if (i == 0) s.externalForce[p].x = -sigma0*m.l0*m.thickness;
+        if (i == nx - 1) s.externalForce[p].x = sigma0*m.l0*m.thickness;
+    }
+    // Critical damping of the first free-free axial mode.
+    s.damping = 2*M_PI*m.pWaveSpeed/Lx;
+    const scalar dt = m.stableTimeStep(0.5);
+    s.computeForces(serialExec{});
+    tensionResult r{false, 0, 0, 0, 0};
+    for (int it = 0; it < 100000 && !r.converged; ++it)
+    {
+        s.step(serialExec{}, dt);
+        r.steps = it + 1;
+        if (it % 500 == 499)
+        {
+            scalar vMax = 0;
+            for (const vec3& v : s.velocity) vMax = std::max(vMax, mag(v));
+            // 1e-7 of the velocity scale of the strain, eps c (round-off
+            // in the bond lengths is about 1e-9 of the strain).
+            r.converged = vMax < 1e-7*sigma0/m.E*m.pWaveSpeed;
+        }
+    }
+    std::vector<stressTensor> sigma;
+    s.stress(serialExec{}, sigma);
+
+    const bool strain2D = plane == pStrain;
+    const scalar Eb = strain2D ? m.E/(1 - nu*nu) : m.E;
+    const scalar nuP = strain2D ? nu/(1 - nu) : nu;
+    const scalar xc = 0.5*Lx;
+    // Mean displacements: of columns i1, i2 (x) and of the top and bottom
+    // rows over the middle half (y).
+    const long i1 = nx/4, i2 = nx - 1 - nx/4;
+    scalar u1 = 0, u2 = 0, top = 0, bottom = 0;
+    label n1 = 0, n2 = 0, nTop = 0, nBottom = 0;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        const vec3& X = s.reference()[p];
+        const vec3 u = s.position[p] - X;
+        const long i = std::lround(X.x/m.l0), j = std::lround(X.y/m.l0);
+        if (i == i1) { u1 += u.x; ++n1; }
+        if (i == i2) { u2 += u.x; ++n2; }
+        if (std::abs(X.x - xc) > 0.25*Lx) continue;
+        r.stressError = std::max({r.stressError,
+            std::abs(sigma[p].xx/sigma0 - 1), std::abs(sigma[p].yy/sigma0),
+            std::abs(sigma[p].xy/sigma0)});
+        if (j == ny - 1) { top += u.y; ++nTop; }
+        if (j == 0) { bottom += u.y; ++nBottom; }
+    }
+    const scalar epsXX = (u2/n2 - u1/n1)/((i2 - i1)*m.l0);
+    const scalar epsYY = (top/nTop - bottom/nBottom)/((ny - 1)*m.l0);
+    r.axialError = epsXX/(sigma0/Eb) - 1;
+    r.poissonError = nu > 0 ? -epsYY/epsXX/nuP - 1 : epsYY/epsXX;
+    return r;
+}
+
+} // End anonymous namespace
+
+TEST(vcpmSolid, uniformTensionPatch)
+{
+    for (const planeModel plane : {pStrain, pStress})
+    {
+        for (const scalar nu : {0.0, 0.25, 0.3, 0.45, 0.49})
+        {
+            const tensionResult on = uniformTension(nu, plane,
+                vcpmMaterial::defaultSurfaceCorrection);
+            const tensionResult off = uniformTension(nu, plane, false);
+            std::printf("uniform tension, %s, nu = %g (%d steps): stress "
+                "%.1e, eps_xx %+.1e, Poisson %+.1e (surface correction on); "
+                "%.1e, %+.1e, %+.1e (off)\n",
+                plane == pStrain ? "plane strain" : "plane stress", nu,
+                on.steps,
+                on.stressError, on.axialError, on.poissonError,
+                off.stressError, off.axialError, off.poissonError);
+            EXPECT_TRUE(on.converged);
+            EXPECT_LT(on.stressError, 0.01);
+            EXPECT_LT(std::abs(on.axialError), 0.01);
+            EXPECT_LT(std::abs(on.poissonError), 0.01);
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P
 (
     lattices, vcpmLatticeCases,
@@ -528,97 +643,181 @@ INSTANTIATE_TEST_SUITE_P
 );
 
 
-// Static cantilever, STATIC_CANTILEVER.md set A in plane strain (the
-// reference's default for a 2D solid; the E' = E/(1 - nu^2) of Gray et al.):
-// L = 0.2, H = 0.02, E = 2 MPa, nu = 0.3975, self-weight at g = 0.0981, two
-// columns clamped in the support, relaxed with damping. At H/l0 = 5 (the
-// coarsest resolution the reference names, 0.8 s) the lattice is 18.7 % too
-// soft against Timoshenko: the surface effect of theory.md §2.8, not the
-// 3 % of issue 4, which needs about 24 layers (measured with
-// benchmarks/vcpmThinMembers, docs/vcpm.md: +3.37 % at 20, +2.63 % at 24,
-// +1.72 % at 32). So this checks the dynamic relaxation against that
-// measured value (the static CG solve of the benchmark gives the same
-// 2.94030e-4 m) and the error model against it.
+// Static cantilever, STATIC_CANTILEVER.md set A: L = 0.2, H = 0.02,
+// E = 2 MPa, nu = 0.3975, self-weight at g = 0.0981, two columns clamped in
+// the support, relaxed with damping (critical for the first bending mode)
+// until max |v| < 1e-9 m/s. Returns the centreline deflection of the tip
+// column (x = L - l0/2; mean of the column).
+namespace
+{
+
+struct cantileverSetA
+{
+    static constexpr scalar L = 0.2, H = 0.02, g = 0.0981, nu = 0.3975;
+    vcpmMaterial m;
+    scalar w = 0, vMax = 0;
+
+    cantileverSetA(const int n, const planeModel plane, const bool surface)
+    :
+        m(2e6, nu, 1000, sq, H/n, plane, 1)
+    {
+        m.surfaceCorrection = surface;
+        const scalar l0 = m.l0;
+        vcpmSolid s(m, cantileverLattice(label(std::lround(L/l0)), n, 2, l0));
+        for (label p = 0; p < s.size(); ++p)
+        {
+            s.clamped[p] = s.reference()[p].x < 0;
+        }
+        s.gravity = {0, -g, 0};
+        const scalar omega1 = 1.8751*1.8751/(L*L)*std::sqrt(EI()/(m.rho*H));
+        s.damping = 2*omega1;
+        const scalar dt = m.stableTimeStep(0.5);
+        s.computeForces(openmpExec{});
+        for (int it = 0; it < 200000; ++it)
+        {
+            s.step(openmpExec{}, dt);
+            if (it % 1000 == 999)
+            {
+                vMax = 0;
+                for (const vec3& v : s.velocity) vMax = std::max(vMax, mag(v));
+                if (vMax < 1e-9) break;
+            }
+        }
+        label nTip = 0;
+        for (label p = 0; p < s.size(); ++p)
+        {
+            if (s.reference()[p].x > L - l0)
+            {
+                w += s.position[p].y - s.reference()[p].y;
+                ++nTip;
+            }
+        }
+        w /= nTip;
+    }
+
+    scalar Eb() const
+    {
+        return m.plane == pStrain ? m.E/(1 - nu*nu) : m.E;
+    }
+    scalar EI() const { return Eb()*H*H*H/12; }
+    scalar kGA() const { return 5.0/6.0*m.E/(2*(1 + nu))*H; }
+    scalar q() const { return -m.rho*g*H; }
+    // Beam theory at x (kGA <= 0: Euler-Bernoulli).
+    scalar beam(const scalar x, const bool shear) const
+    {
+        return cantileverDeflection(x, L, q(), EI(), shear ? kGA() : 0);
+    }
+    scalar xTip() const { return L - 0.5*m.l0; }
+};
+
+} // End anonymous namespace
+
+// Issue 4's check on the default path (surface correction on): the tip
+// deflection of set A within 3 % of the reference's Timoshenko value, in
+// plane strain (the reference's 2D default) and plane stress, at H/l0 = 5,
+// the fewest layers that pass (measured +2.19 % plane strain; 4 layers:
+// +4.4 %). Checked twice: against Timoshenko at the tip column's x (the
+// strict comparison) and the tip column against the tabulated w_tip at
+// x = L (STATIC_CANTILEVER_REFERENCE.csv; about 1.3 % kinder, the column
+// sits l0/2 inside the tip). No stiffness model enters.
 TEST(vcpmSolid, staticCantileverSetA)
 {
-    const scalar L = 0.2, H = 0.02, g = 0.0981, nu = 0.3975;
+    ASSERT_TRUE(vcpmMaterial::defaultSurfaceCorrection);
     const int n = 5;
-    const scalar l0 = H/n;
-    const vcpmMaterial m(2e6, nu, 1000, sq, l0, pStrain, 1);
-    vcpmSolid s(m, cantileverLattice(label(std::lround(L/l0)), n, 2, l0));
-    for (label p = 0; p < s.size(); ++p)
+    // STATIC_CANTILEVER.md set A, Timoshenko w_tip: plane strain, stress.
+    const scalar reference[2] = {2.5109e-4, 2.9759e-4};
+    for (const planeModel plane : {pStrain, pStress})
     {
-        s.clamped[p] = s.reference()[p].x < 0;
+        const cantileverSetA c(n, plane,
+                               vcpmMaterial::defaultSurfaceCorrection);
+        ASSERT_LT(c.vMax, 1e-9);
+        const scalar ref = reference[plane == pStress];
+        // Our beam formula reproduces the tabulated value at x = L.
+        EXPECT_NEAR(-c.beam(c.L, true)/ref, 1, 2e-4);
+        const scalar wT = c.beam(c.xTip(), true);
+        std::printf("cantilever set A, n = %d, %s, surface correction on: "
+                    "w = %.5e, Timoshenko at the tip column %.5e (%+.2f %%), "
+                    "reference w_tip %.4e (%+.2f %%)\n", n,
+                    plane == pStrain ? "plane strain" : "plane stress", c.w,
+                    wT, 100*(c.w/wT - 1), -ref, 100*(-c.w/ref - 1));
+        EXPECT_LT(std::abs(c.w/wT - 1), 0.03);
+        EXPECT_LT(std::abs(-c.w/ref - 1), 0.03);
+        // And the corrected error model (1/(1 + 3/n^3)): within 1 %.
+        const scalar ratio = 1 + thinMemberStiffnessError(n, c.m);
+        const scalar wB = c.beam(c.xTip(), false);
+        EXPECT_NEAR(c.w/(wB/ratio + wT - wB), 1, 0.01);
     }
-    s.gravity = {0, -g, 0};
-
-    // Critical damping of the first bending mode.
-    const scalar Eb = m.E/(1 - nu*nu);
-    const scalar EI = Eb*H*H*H/12;
-    const scalar omega1 = 1.8751*1.8751/(L*L)*std::sqrt(EI/(m.rho*H));
-    s.damping = 2*omega1;
-    const scalar dt = m.stableTimeStep(0.5);
-    s.computeForces(openmpExec{});
-    scalar vMax = 0;
-    for (int it = 0; it < 200000; ++it)
-    {
-        s.step(openmpExec{}, dt);
-        if (it % 1000 == 999)
-        {
-            vMax = 0;
-            for (const vec3& v : s.velocity) vMax = std::max(vMax, mag(v));
-            if (vMax < 1e-9) break;
-        }
-    }
-    ASSERT_LT(vMax, 1e-9);
-
-    // Centreline deflection of the tip column, at its x = L - l0/2.
-    scalar w = 0;
-    label nTip = 0;
-    for (label p = 0; p < s.size(); ++p)
-    {
-        if (s.reference()[p].x > L - l0)
-        {
-            w += s.position[p].y - s.reference()[p].y;
-            ++nTip;
-        }
-    }
-    w /= nTip;
-    const scalar q = -m.rho*g*H, x = L - 0.5*l0;
-    const scalar kGA = 5.0/6.0*m.E/(2*(1 + nu))*H;
-    const scalar wB = cantileverDeflection(x, L, q, EI, 0);
-    const scalar wT = cantileverDeflection(x, L, q, EI, kGA);
-
-    // The lattice's EI from the measured bending part, and the error model.
-    const scalar ratio = wB/(w - (wT - wB));
-    const scalar predicted = 1 + thinMemberStiffnessError(n, nu, pStrain);
-    const scalar wCorrected = wB/predicted + (wT - wB);
-    std::printf("cantilever n = %d: w = %.5e, Timoshenko %.5e (%+.2f %%), "
-                "EI ratio %.4f, predicted %.4f, w/(predicted) %+.2f %%\n",
-                n, w, wT, 100*(w/wT - 1), ratio, predicted,
-                100*(w/wCorrected - 1));
-    EXPECT_NEAR(w/wT - 1, 0.1866, 0.005);      // measured, not the issue's 3 %
-    EXPECT_NEAR(w/wCorrected, 1, 0.01);
 }
 
-// The error model: too soft, less so with more layers, and the minimum
-// layers for 5 % at nu = 0.3 in plane stress (docs/vcpm.md; n = 16:
-// EI ratio 0.944, n = 20: 0.956).
+// The plain lattice (surfaceCorrection off) at the same 5 layers: 18.7 %
+// too soft against Timoshenko (theory.md §2.8; the static CG solve of
+// benchmarks/vcpmThinMembers gives the same), and its error model thinMemberStiffnessError(off) puts
+// the deflection within 1 % (measured +0.39 %).
+TEST(vcpmSolid, staticCantileverSetAUncorrected)
+{
+    const int n = 5;
+    const cantileverSetA c(n, pStrain, false);
+    ASSERT_LT(c.vMax, 1e-9);
+    const scalar wB = c.beam(c.xTip(), false), wT = c.beam(c.xTip(), true);
+    const scalar ratio = wB/(c.w - (wT - wB));
+    const scalar predicted = 1 + thinMemberStiffnessError(n, c.m);
+    const scalar wCorrected = wB/predicted + (wT - wB);
+    std::printf("cantilever n = %d, surface correction off: w = %.5e, "
+                "Timoshenko %.5e (%+.2f %%), EI ratio %.4f, predicted %.4f, "
+                "w/(predicted) %+.2f %%\n", n, c.w, wT, 100*(c.w/wT - 1),
+                ratio, predicted, 100*(c.w/wCorrected - 1));
+    EXPECT_NEAR(c.w/wT - 1, 0.1866, 0.005);
+    EXPECT_NEAR(c.w/wCorrected, 1, 0.01);
+}
+
+// The error models (docs/vcpm.md). Off: too soft, less so with more
+// layers; two table values; 18 layers for 5 % at nu = 0.3 plane stress.
+// On: 1/(1 + 3/n^3) against the measured EI ratios (n = 4: 0.955-0.959,
+// n = 5: 0.974-0.979 over nu and both models), 4 layers for 5 %, 5 for 3 %;
+// plane strain above nu = 0.46 the envelope 1.8/n^2 (6 for 5 %, 8 for 3 %).
 TEST(vcpmSolid, thinMemberStiffnessError)
 {
-    scalar last = -1;
-    for (const int n : {2, 3, 4, 6, 8, 12, 16, 32})
+    for (const bool surface : {false, true})
     {
-        const scalar e = thinMemberStiffnessError(n, 0.3, pStress);
-        EXPECT_LT(e, 0);
-        EXPECT_GT(e, last);
-        last = e;
+        scalar last = -1;
+        for (const int n : {2, 3, 4, 6, 8, 12, 16, 32})
+        {
+            const scalar e = thinMemberStiffnessError(n, 0.3, pStress, surface);
+            EXPECT_LT(e, 0);
+            EXPECT_GT(e, last);
+            last = e;
+        }
+        EXPECT_EQ(thinMemberStiffnessError(1, 0.3, pStress, surface), -1);
     }
-    EXPECT_NEAR(thinMemberStiffnessError(4, 0.3, pStress), 0.7632 - 1, 0.005);
-    EXPECT_NEAR(thinMemberStiffnessError(8, 0.0, pStress), 0.9517 - 1, 0.005);
-    EXPECT_EQ(thinMemberStiffnessError(1, 0.3, pStress), -1);
-    const label n5 = minimumLayers(0.05, 0.3, pStress);
-    EXPECT_EQ(n5, 18);
+    EXPECT_NEAR(thinMemberStiffnessError(4, 0.3, pStress, false),
+                0.7632 - 1, 0.005);
+    EXPECT_NEAR(thinMemberStiffnessError(8, 0.0, pStress, false),
+                0.9517 - 1, 0.005);
+    EXPECT_EQ(minimumLayers(0.05, 0.3, pStress, false), 18);
+
+    for (const scalar nu : {0.0, 0.3, 0.3975, 0.45})
+    {
+        for (const planeModel pl : {pStress, pStrain})
+        {
+            EXPECT_NEAR(thinMemberStiffnessError(4, nu, pl, true),
+                        0.9560 - 1, 0.004);
+            EXPECT_NEAR(thinMemberStiffnessError(5, nu, pl, true),
+                        0.9770 - 1, 0.004);
+            EXPECT_EQ(minimumLayers(0.05, nu, pl, true), 4);
+            EXPECT_EQ(minimumLayers(0.03, nu, pl, true), 5);
+        }
+    }
+    EXPECT_EQ(minimumLayers(0.05, 0.49, pStress, true), 4);
+    EXPECT_EQ(minimumLayers(0.05, 0.49, pStrain, true), 6);
+    EXPECT_EQ(minimumLayers(0.03, 0.49, pStrain, true), 8);
+
+    // The material overloads follow its flag.
+    vcpmMaterial m(2e6, 0.3, 1000, sq, 0.01, pStrain, 1);
+    EXPECT_TRUE(m.surfaceCorrection);
+    EXPECT_EQ(thinMemberStiffnessError(5, m),
+              thinMemberStiffnessError(5, 0.3, pStrain, true));
+    m.surfaceCorrection = false;
+    EXPECT_EQ(minimumLayers(0.05, m), minimumLayers(0.05, 0.3, pStrain, false));
 }
 
 
@@ -632,11 +831,15 @@ INSTANTIATE_TEST_SUITE_P
     surfaceCorrected, vcpmLatticeCases,
     ::testing::Values
     (
-        latticeCase{sc, pStrain, 0.0, true}, latticeCase{sc, pStrain, 0.3, true},
-        latticeCase{sc, pStrain, 0.45, true},
-        latticeCase{sq, pStrain, 0.0, true}, latticeCase{sq, pStrain, 0.3, true},
-        latticeCase{sq, pStrain, 0.45, true},
-        latticeCase{sq, pStress, 0.3, true}, latticeCase{sq, pStress, 0.45, true}
+        latticeCase{sc, pStrain, 0.0, true}, latticeCase{sc, pStrain, 0.25, true},
+        latticeCase{sc, pStrain, 0.3, true}, latticeCase{sc, pStrain, 0.45, true},
+        latticeCase{sc, pStrain, 0.49, true},
+        latticeCase{sq, pStrain, 0.0, true}, latticeCase{sq, pStrain, 0.25, true},
+        latticeCase{sq, pStrain, 0.3, true}, latticeCase{sq, pStrain, 0.45, true},
+        latticeCase{sq, pStrain, 0.49, true},
+        latticeCase{sq, pStress, 0.0, true}, latticeCase{sq, pStress, 0.25, true},
+        latticeCase{sq, pStress, 0.3, true}, latticeCase{sq, pStress, 0.45, true},
+        latticeCase{sq, pStress, 0.49, true}
     )
 );
 
@@ -692,13 +895,15 @@ scalar cantileverError(const scalar nu, const int n, const bool surface)
 
 } // End anonymous namespace
 
-// Issue 4's 3 % on the static tip at 5 layers, which the plain lattice
-// misses by 19-24 % (staticCantileverSetA): with the surface correction
-// measured +2.26 % (nu = 0.3) and +2.19 % (nu = 0.4) by the static solve of
-// benchmarks/vcpmThinMembers.
+// The set-A geometry at 5 layers, plane strain, over the issue's nu: within
+// 3 % of Timoshenko with the correction (static solve of
+// benchmarks/vcpmThinMembers: +2.17, +2.27, +2.26, +2.59 % at nu = 0,
+// 0.25, 0.3, 0.45; at 0.49 -1.75 %, gamma floored at 0: the affine
+// calibration gives -0.51 and +14.3 %), 10-24 % soft without at nu <= 0.3
+// and 41 % stiff at 0.49.
 TEST(vcpmSurfaceCorrection, cantileverFiveLayers)
 {
-    for (const scalar nu : {0.3, 0.4})
+    for (const scalar nu : {0.0, 0.25, 0.3, 0.45, 0.49})
     {
         const scalar on = cantileverError(nu, 5, true);
         std::printf("cantilever n = 5, nu = %g, plane strain: %+.2f %% "
