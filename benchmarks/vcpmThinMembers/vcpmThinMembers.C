@@ -5,7 +5,9 @@
 //                 [-surface on|off|both]
 //
 // -surface: the surface correction of bondList.H (default both: each case
-// without, then with; docs/vcpm.md "Surface correction"). BEAM_L=0.8 in the
+// without, then with; docs/vcpm.md "Surface correction"); with it the
+// surface shift gamma of the material is printed and "fit" is the
+// corrected model of thinMemberStiffnessError. BEAM_L=0.8 in the
 // environment makes the beam longer (L/H = 40) to separate the clamp root.
 //
 // Bending stiffness of the square VCPM lattice against the number of layers
