@@ -22,7 +22,6 @@ fluidSolidCoupling::fluidSolidCoupling(solidBodySet& solids)
     const label n = size();
     position.resize(n);
     meanVelocity.resize(n);
-    meanAcceleration.assign(n, vec3{0, 0, 0});
     fluidForce.assign(n, vec3{0, 0, 0});
     fluidForceAtStart.assign(n, vec3{0, 0, 0});
     heldForce_.resize(n);
@@ -80,17 +79,12 @@ label fluidSolidCoupling::advance(const scalar dt,
     }
     copyPositions();
 
-    // Time averages over this half step; the acceleration over the two
-    // half steps' midpoints.
-    const scalar span = lastHalf_ > 0 ? 0.5*(dt + lastHalf_) : dt;
+    // The mean velocity over this half step.
     const label n = size();
     for (label i = 0; i < n; ++i)
     {
-        const vec3 mean = (1/dt)*(position[i] - start[i]);
-        meanAcceleration[i] = (1/span)*(mean - meanVelocity[i]);
-        meanVelocity[i] = mean;
+        meanVelocity[i] = (1/dt)*(position[i] - start[i]);
     }
-    lastHalf_ = dt;
     return most;
 }
 
@@ -132,7 +126,6 @@ void fluidSolidCoupling::saveStepStart()
                               s.velocity.end());
     }
     startMeanVelocity_ = meanVelocity;
-    startMeanAcceleration_ = meanAcceleration;
 }
 
 
@@ -150,7 +143,6 @@ void fluidSolidCoupling::restoreStepStart()
     }
     copyPositions();
     meanVelocity = startMeanVelocity_;
-    meanAcceleration = startMeanAcceleration_;
 }
 
 

@@ -482,8 +482,7 @@ void fsiSolver::updateWalls()
         using K = decltype(kernel);
         parallelFor(openmpExec{}, v.n, adamiWallOp<K>{kernel, grid_,
             cells_.cellStart.data(), v, eos_, support2, model_.g,
-            nearFluid_.data(),
-            coupling_ ? coupling_->meanAcceleration.data() : nullptr});
+            nearFluid_.data()});
         if (model_.sps)
         {
             const scalar filter = model_.dp

@@ -407,6 +407,7 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
             const scalar mw = pf.mass[w];
             const scalar rhow = pf.rho[w];
             const scalar pw = pf.p[w];
+            const bool solid = pf.kind[w] == solidKind;
             forEachFluidNear(s, kernel, xw, [&](const label j, const scalar r)
             {
                 if (r <= 0) return;
@@ -415,7 +416,9 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
                 const scalar mf = pf.mass[j];
                 const scalar rhof = pf.rho[j];
                 // a_f -= m_w (p_f + p_w)/(rho_f rho_w) G x_fw
-                f += (mf*mw*(pf.p[j] + pw)/(rhof*rhow)*G)*d;
+                // Tension is not transmitted to a solid (fluidPairTerms).
+                const scalar pf_j = solid && pf.p[j] < 0 ? 0 : pf.p[j];
+                f += (mf*mw*(pf_j + pw)/(rhof*rhow)*G)*d;
                 if (laminar)
                 {
                     const scalar r2 = r*r;

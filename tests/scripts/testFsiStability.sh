@@ -1,0 +1,125 @@
+#!/bin/bash
+# FSI stability suite (coarse, for CI): a dam break (water 0.2 x 0.4 m,
+# dp = 10 mm, in a 0.8 x 0.5 m box) hits an elastic plate clamped in the
+# floor at x = 0.5 m, run to 1 s (the front reaches the plate at about
+# 0.25 s): a stiff aluminium plate (E = 70 GPa, rho = 2700: about 50 solid
+# steps per fluid step), a very soft one with large deformation (E = 1 MPa,
+# nu = 0.49), a thin plate of 3 layers; and a fast jet (a water block at
+# 5 m/s, no gravity) hitting a plate. Each run must end normally with every
+# written state finite, no fluid particle inside the solid (3 or more solid
+# particles within dp_s of it), no fluid particle removed, the fluid's
+# mechanical energy never above its start by more than 1 % (the solid takes
+# energy, it must not give more), and the plate's largest displacement
+# below its height (a bounded response).
+. "$(dirname "$0")/testLib.sh"
+. "$(dirname "$0")/fieldTools.sh"
+
+# makeCase <name> <E> <nu> <rho> <thickness> <height> <jet: yes|no>
+makeCase()
+{
+    local c="$scratch/$1" E="$2" nu="$3" rho="$4" t="$5" H="$6" jet="$7"
+    mkdir -p "$c/system" "$c/constant"
+    local water="min (0 0 0); max (0.2 0.4 0);" U="(0 0 0)" g="(0 -9.81 0)"
+    local sound="coefSound 20;"
+    if [ "$jet" = yes ]; then
+        water="min (0.05 0.1 0); max (0.25 0.2 0);"; U="(5 0 0)"; g="(0 0 0)"
+        sound="c0 60;"
+    fi
+    cat > "$c/system/generateParticlesDict" <<DICT
+nDimensions 2;
+dp 0.01;
+bodies
+{
+    plate
+    {
+        type solid;
+        shapes { p { shape box; min (0.5 -0.03 0); max ($(awk -v t=$t 'BEGIN { print 0.5 + t }') $H 0); } }
+        clamp  { c { shape box; min (0 -1 0); max (1 0 0); } }
+    }
+    box { type wall; container { min (0 0 0); max (0.8 0.5 0); layers 3; openTop no; } }
+    water { type fluid; U $U; shapes { w { shape box; $water } } }
+}
+DICT
+    cat > "$c/constant/solidProperties" <<DICT
+plate { rho $rho; E $E; nu $nu; lattice square2D; plane planeStrain; }
+DICT
+    cat > "$c/constant/fluidProperties" <<DICT
+rho0 1000; nu 1e-6; $sound gamma 7; turbulence off;
+DICT
+    cat > "$c/constant/g" <<DICT
+dimensions [0 1 -2 0 0 0 0];
+value $g;
+DICT
+    cat > "$c/system/sphSchemes" <<'DICT'
+kernel wendlandC2; hOverDp 1.5;
+densityDiffusion { type fourtakas; delta 0.1; }
+viscosity { type laminar; }
+shifting { type none; }
+boundary adami;
+DICT
+    cat > "$c/system/controlDict" <<'DICT'
+application sphVcpmFsi; startFrom latestTime; startTime 0; stopAt endTime;
+endTime 1; deltaT 1e-5; adjustTimeStep yes; maxCo 0.2; maxDeltaT 1e-3;
+writeControl adjustableRunTime; writeInterval 0.1; writeFormat ascii;
+writePrecision 12; logInterval 100000;
+functions { energy { type energy; writeControl timeStep; writeInterval 10; } }
+DICT
+}
+
+# checkCase <name> <plate height>
+checkCase()
+{
+    local name="$1" c="$scratch/$1" H="$2"
+    (cd "$c" && generateParticles > log.generateParticles 2>&1 \
+             && sphVcpmFsi > log.sphVcpmFsi 2>&1)
+    check "$name: the run ends normally" grep -q '^End' "$c/log.sphVcpmFsi"
+    check "$name: no particle removed" bash -c "! grep -q '^Removed' '$c/log.sphVcpmFsi'"
+    local bad=0 t inside umax=0 u
+    for t in $(cd "$c" && ls -d [0-9]* | grep -v '^0$'); do
+        # Finite fluid state, and no fluid inside the plate.
+        inside=$(python3 - "$c/$t" <<'PY'
+import math, re, sys
+d = sys.argv[1]
+def vec(f):
+    t = open(f).read(); t = t[t.index('value'):]
+    return [tuple(map(float, m)) for m in re.findall(
+        r'^\(([^ ()]+) ([^ ()]+) ([^ ()]+)\)$', t, re.M)]
+w = vec(d + '/water/position'); s = vec(d + '/plate/position')
+if any(not all(map(math.isfinite, p)) for p in w + s):
+    print("NaN"); sys.exit()
+cells = {}
+for p in s:
+    cells.setdefault((int(p[0]//0.01), int(p[1]//0.01)), []).append(p)
+n = 0
+for p in w:
+    i, j = int(p[0]//0.01), int(p[1]//0.01)
+    near = sum(1 for a in (-1, 0, 1) for b in (-1, 0, 1)
+               for q in cells.get((i + a, j + b), ())
+               if (q[0]-p[0])**2 + (q[1]-p[1])**2 < 1e-4)
+    n += near >= 3
+print(n)
+PY
+)
+        [ "$inside" = 0 ] || { bad=$((bad + 1)); echo "    time $t: $inside fluid particles inside the plate (or NaN)"; }
+        u=$(fieldValues "$c/$t/plate/displacement" | awk '{ m2 = $1*$1 + $2*$2; if (m2 > m) m = m2 } END { print sqrt(m) }')
+        umax=$(awk -v a="$umax" -v b="$u" 'BEGIN { print (b > a ? b : a) }')
+    done
+    check "$name: every written state finite, no fluid inside the plate" [ $bad -eq 0 ]
+    check "$name: the plate's largest displacement ($umax m) is below its height $H m" \
+        awk -v u="$umax" -v H="$H" 'BEGIN { exit !(u == u + 0 && u < H) }'
+    local e=postProcessing/energy/0/energy.dat
+    check "$name: fluid energy never above its start by more than 1 %" awk '
+        !/^#/ { E = $3 + $4; if (n++ == 0) E0 = E; if (E > Emax) Emax = E }
+        END { d = (Emax - E0)/(E0 < 0 ? -E0 : E0); printf "    max rise %.3g of the start\n", d; exit !(d <= 0.01) }' "$c/$e"
+    grep -E "solid steps per fluid step" "$c/log.sphVcpmFsi" | sed "s/^ */    $name: /"
+}
+
+makeCase stiffPlate 70e9 0.3 2700 0.04 0.1 no
+checkCase stiffPlate 0.1
+makeCase softPlate 1e6 0.49 1000 0.04 0.2 no
+checkCase softPlate 0.2
+makeCase thinPlate 1e7 0.3 1000 0.03 0.15 no
+checkCase thinPlate 0.15
+makeCase fastJet 1e7 0.3 1000 0.04 0.3 yes
+checkCase fastJet 0.3
+finish
