@@ -5,30 +5,36 @@
 # momentum of fluid and solid to round-off: the solid receives exactly the
 # reaction of the fluid's forces over each step. The solid must also have
 # been pushed (it takes momentum from the fluid), no fluid particle may
-# end inside the solid, and the log reports the sub-steps.
+# end inside the solid, and the log reports the sub-steps. A third run
+# does the same in 3D (simple cubic lattice, r = 1).
 source "$(dirname "$0")/testLib.sh"
 source "$(dirname "$0")/fieldTools.sh"
 
-makeCase()   # makeCase <dir> <solid dp>
+makeCase()   # makeCase <dir> <solid dp> <nDimensions>
 {
-    local c="$1"
+    local c="$1" waterMax="(0.1 0.1 0)" blockMin="(0.105 0.02 0)"
+    local blockMax="(0.145 0.08 0)" lattice="square2D; plane planeStrain"
+    if [ "$3" = 3 ]; then
+        waterMax="(0.05 0.05 0.05)"; blockMin="(0.055 0.01 0.01)"
+        blockMax="(0.085 0.04 0.04)"; lattice="simpleCubic3D"
+    fi
     mkdir -p "$c/system" "$c/constant"
     cat > "$c/system/generateParticlesDict" <<DICT
-nDimensions 2;
+nDimensions $3;
 dp          0.01;
 bodies
 {
-    water { type fluid; U (1 0 0); shapes { b { shape box; min (0 0 0); max (0.1 0.1 0); } } }
+    water { type fluid; U (1 0 0); shapes { b { shape box; min (0 0 0); max $waterMax; } } }
     block
     {
         type solid;
         dp   $2;
-        shapes { b { shape box; min (0.105 0.02 0); max (0.145 0.08 0); } }
+        shapes { b { shape box; min $blockMin; max $blockMax; } }
     }
 }
 DICT
-    cat > "$c/constant/solidProperties" <<'DICT'
-block { rho 1100; E 2e6; nu 0.3; lattice square2D; plane planeStrain; }
+    cat > "$c/constant/solidProperties" <<DICT
+block { rho 1100; E 2e6; nu 0.3; lattice $lattice; }
 DICT
     cat > "$c/constant/fluidProperties" <<'DICT'
 rho0 1000; nu 1e-6; c0 40; gamma 7; turbulence off;
@@ -74,25 +80,27 @@ momentum()
                 END { printf "%.17g %.17g %.17g\n", px, py, s }'
 }
 
-for r in 1 2; do
-    c="$scratch/fsi$r"
-    makeCase "$c" "$(python3 -c "print(0.01/$r)")"
-    generateParticles -case "$c" > "$scratch/log.gen$r" 2>&1
-    check "r=$r: generateParticles" [ $? -eq 0 ]
-    sphVcpmFsi -case "$c" > "$scratch/log.run$r" 2>&1
-    check "r=$r: sphVcpmFsi runs fluid and solid" [ $? -eq 0 ]
-    log="$scratch/log.run$r"
-    expectIn "r=$r: log names the solid" "$log" "block \(solid\)"
-    expectIn "r=$r: log reports the solid steps" "$log" "solid steps per fluid step"
-    expectIn "r=$r: End" "$log" "^End"
-    check "r=$r: forces on the block written" \
+for run in r1 r2 3D; do
+    r=${run#r}; nDim=2
+    [ "$run" = 3D ] && { r=1; nDim=3; }
+    c="$scratch/fsi$run"
+    makeCase "$c" "$(python3 -c "print(0.01/$r)")" $nDim
+    generateParticles -case "$c" > "$scratch/log.gen$run" 2>&1
+    check "$run: generateParticles" [ $? -eq 0 ]
+    sphVcpmFsi -case "$c" > "$scratch/log.run$run" 2>&1
+    check "$run: sphVcpmFsi runs fluid and solid" [ $? -eq 0 ]
+    log="$scratch/log.run$run"
+    expectIn "$run: log names the solid" "$log" "block \(solid\)"
+    expectIn "$run: log reports the solid steps" "$log" "solid steps per fluid step"
+    expectIn "$run: End" "$log" "^End"
+    check "$run: forces on the block written" \
         [ -s "$c/postProcessing/blockForce/0/force.dat" ]
     for f in position U displacement vonMises p; do
-        check "r=$r: 0.03/block/$f written" [ -f "$c/0.03/block/$f" ]
+        check "$run: 0.03/block/$f written" [ -f "$c/0.03/block/$f" ]
     done
     read p0x p0y s0 <<< "$(momentum "$c" 0)"
     read p1x p1y s1 <<< "$(momentum "$c" 0.03)"
-    check "r=$r: total momentum conserved to round-off ($p0x $p0y -> $p1x $p1y)" \
+    check "$run: total momentum conserved to round-off ($p0x $p0y -> $p1x $p1y)" \
         python3 -c "import sys; sys.exit(0 if abs($p1x-$p0x) < 1e-12*$s0 and abs($p1y-$p0y) < 1e-12*$s0 else 1)"
     # The block took momentum from the water.
     pb=$(python3 - "$c/0.03/block" <<'PY'
@@ -102,11 +110,11 @@ u = [float(m) for m in re.findall(r'^\(([-\d.e+]+) ', t, re.M)]
 print(sum(u)/len(u))
 PY
 )
-    check "r=$r: the block moves with the water (mean u $pb m/s)" \
+    check "$run: the block moves with the water (mean u $pb m/s)" \
         python3 -c "import sys; sys.exit(0 if $pb > 0.05 else 1)"
     # No water inside the block: every water particle stays outside the
     # block's particle hull, shrunk by a quarter of the solid spacing.
-    check "r=$r: no water inside the block" python3 - "$c/0.03" "$r" <<'PY'
+    check "$run: no water inside the block" python3 - "$c/0.03" "$r" <<'PY'
 import re, sys
 d, r = sys.argv[1], int(sys.argv[2])
 def vec(f):
@@ -117,7 +125,10 @@ b = vec(d + '/block/position'); w = vec(d + '/water/position')
 q = 0.25*0.01/r
 x0 = min(p[0] for p in b) + q; x1 = max(p[0] for p in b) - q
 y0 = min(p[1] for p in b) + q; y1 = max(p[1] for p in b) - q
-inside = [p for p in w if x0 < p[0] < x1 and y0 < p[1] < y1]
+z0 = min(p[2] for p in b) + q; z1 = max(p[2] for p in b) - q
+flat = z1 < z0     # 2D: every z is 0
+inside = [p for p in w if x0 < p[0] < x1 and y0 < p[1] < y1
+          and (flat or z0 < p[2] < z1)]
 print(len(inside), "water particles inside the block")
 sys.exit(1 if inside else 0)
 PY
