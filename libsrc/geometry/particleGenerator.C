@@ -470,6 +470,7 @@ void particleGenerator::generate()
             const scalar cellVolume = std::pow(spec.dp, nDimensions_);
 
             const std::size_t nNodes = nodes.size();
+            std::size_t nNearSolid = 0;     // walls: nodes a solid covers
             for (const auto& [obstacleDp, locator] : near)
             {
                 const scalar minDistance =
@@ -483,6 +484,31 @@ void particleGenerator::generate()
                     }
                 }
                 nodes.resize(kept);
+            }
+            if (type == bodyType::wall)
+            {
+                nNearSolid = nNodes - nodes.size();
+            }
+            if (nNearSolid)
+            {
+                // A solid inside a wall would be pushed by nothing and
+                // held by nothing there: clamp it instead (its clamp
+                // holds it, the fluid sees it as a wall).
+                std::string solids;
+                for (const bodySpec& o : specs_)
+                {
+                    if (o.type != bodyType::solid) continue;
+                    solids += (solids.empty() ? "" : ", ") + o.name;
+                }
+                std::ostringstream os;
+                os << "Wall body '" << spec.name << "' overlaps the solid"
+                   << " body (" << solids << "): " << nNearSolid << " of its"
+                   << " lattice nodes lie within (dp + dp_s)/2 of solid"
+                   << " particles. Shape the wall around the solid, or hold"
+                   << " the solid's end with its clamp { ... } instead of"
+                   << " burying it in the wall";
+                fatalIOError(spec.file, spec.line, os.str(),
+                             spec.name);
             }
 
             if (nodes.empty())

@@ -201,6 +201,13 @@ bondList::bondList(const std::vector<vec3>& X, const scalar l0,
             if (k1 >= 0) pairFactor_[k1] -= gamma;
         }
     }
+    // A member 2 or 3 layers thick, or an edge, takes the decrement from
+    // several faces; more than one would leave the bond soft or negative
+    // (a 3 x 3 x 3 block blew up). At most one is kept.
+    for (scalar& f : pairFactor_)
+    {
+        f = f < 1 - gamma ? 1 - gamma : f;
+    }
 }
 
 
