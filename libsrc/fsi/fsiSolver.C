@@ -228,6 +228,21 @@ void fsiSolver::readStartTime()
             solidViews_.push_back({b.name, &b.solid->reference(),
                                    &b.solid->position});
         }
+        // A restart: the mean velocity the fluid saw when it was written.
+        std::size_t solid = 0;
+        for (const particleBody& body : bodies)
+        {
+            if (body.type() != bodyType::solid) continue;
+            if (body.hasField("Umean"))
+            {
+                const std::vector<vec3>& u = body.vectorField("Umean");
+                for (label i = 0; i < body.size(); ++i)
+                {
+                    coupling_->meanVelocity[coupling_->index(solid, i)] = u[i];
+                }
+            }
+            ++solid;
+        }
     }
     label nextSolid = 0;   // the solids' order in the coupling arrays
     const scalar defaultMass = model_.rho0*std::pow(dp, nDim);
@@ -836,9 +851,13 @@ void fsiSolver::write()
     for (std::size_t b = 0; b < solidsOut.size(); ++b)
     {
         std::vector<scalar>& p = solidsOut[b].addScalarField("p");
+        // The velocity the fluid sees (the last half step's mean), so that
+        // a restart continues exactly.
+        std::vector<vec3>& meanU = solidsOut[b].addVectorField("Umean");
         for (label i = 0; i < solidsOut[b].size(); ++i)
         {
             p[i] = solidPressure[coupling_->index(b, i)];
+            meanU[i] = coupling_->meanVelocity[coupling_->index(b, i)];
         }
         out.push_back(std::move(solidsOut[b]));
     }

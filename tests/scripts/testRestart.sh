@@ -6,6 +6,8 @@
 # a restart, so the runs agree to round-off (grown over the 150 steps after
 # the restart), not bit for bit; a restart that lost or changed any state
 # (velocity, density, time step, speed of sound) differs by far more.
+# The same for a coupled run: the dam break against an elastic plate
+# (stopped at 0.3 s, after the water reached it, continued to 0.32 s).
 . "$(dirname "$0")/testLib.sh"
 . "$(dirname "$0")/fieldTools.sh"
 
@@ -45,12 +47,55 @@ for body in water box; do
     bodyTable "$scratch/whole/0.06" $body position U rho > "$scratch/a.$body"
     bodyTable "$scratch/halves/0.06" $body position U rho > "$scratch/b.$body"
     check "$body has the same particles" \
-        [ "$(wc -l < "$scratch/a.$body")" = "$(wc -l < "$scratch/b.$body")" ]
+        [ -s "$scratch/a.$body" -a "$(wc -l < "$scratch/a.$body")" = "$(wc -l < "$scratch/b.$body")" ]
     d=$(maxDifference "$scratch/a.$body" "$scratch/b.$body")
     # The order of particles sharing a cell can differ after a restart, so
     # sums are added in another order: round-off, nothing more.
     check "$body: restarted fields equal the uninterrupted ones (max |diff| $d)" \
         awk -v d="$d" 'BEGIN { exit !(d == d + 0 && d < 1e-9) }'
 done
+
+# The coupled case: damBreakSmall2D with a rubber plate in the water's way.
+fsi="$scratch/fsiSource"
+cp -r "$source" "$fsi"
+sed -i 's/^writeFormat .*/writeFormat     ascii;/; s/^writePrecision .*/writePrecision  17;/; s/^writeInterval .*/writeInterval   0.02;/' \
+    "$fsi/system/controlDict"
+awk '{ print } prev == "bodies" && $0 == "{" {
+    print "    plate"
+    print "    {"
+    print "        type solid;"
+    print "        shapes { p { shape box; min (0.5 0 0); max (0.54 0.15 0); } }"
+    print "        clamp  { c { shape box; min (0 -1 0); max (1 0.02 0); } }"
+    print "    }" } { prev = $0 }' "$source/system/generateParticlesDict" \
+    > "$fsi/system/generateParticlesDict"
+cat > "$fsi/constant/solidProperties" <<'DICT'
+plate { rho 1000; E 1e7; nu 0.3; lattice square2D; plane planeStrain; }
+DICT
+for c in fsiWhole fsiHalves; do
+    cp -r "$fsi" "$scratch/$c"
+    (cd "$scratch/$c" && generateParticles > log.generateParticles 2>&1)
+done
+check "fsi: the case has a plate" [ -d "$scratch/fsiWhole/0/plate" ]
+setEnd "$scratch/fsiWhole" 0.32
+(cd "$scratch/fsiWhole" && sphVcpmFsi > log.sphVcpmFsi 2>&1)
+check "fsi: uninterrupted run to 0.32 s succeeds" grep -q '^End' "$scratch/fsiWhole/log.sphVcpmFsi"
+setEnd "$scratch/fsiHalves" 0.3
+(cd "$scratch/fsiHalves" && sphVcpmFsi > log.first 2>&1)
+setEnd "$scratch/fsiHalves" 0.32
+(cd "$scratch/fsiHalves" && sphVcpmFsi > log.second 2>&1)
+check "fsi: the continued run succeeds" grep -q '^End' "$scratch/fsiHalves/log.second"
+expectIn "fsi: it starts from 0.3" "$scratch/fsiHalves/log.second" '^Reading time 0.3$'
+for body in water plate; do
+    bodyTable "$scratch/fsiWhole/0.32" $body position U > "$scratch/a.$body"
+    bodyTable "$scratch/fsiHalves/0.32" $body position U > "$scratch/b.$body"
+    check "fsi: $body has the same particles" \
+        [ -s "$scratch/a.$body" -a "$(wc -l < "$scratch/a.$body")" = "$(wc -l < "$scratch/b.$body")" ]
+    d=$(maxDifference "$scratch/a.$body" "$scratch/b.$body")
+    check "fsi: $body restarted equals uninterrupted (max |diff| $d)" \
+        awk -v d="$d" 'BEGIN { exit !(d == d + 0 && d < 1e-9) }'
+done
+# The plate had moved: the comparison is not between two resting plates.
+u=$(fieldValues "$scratch/fsiWhole/0.32/plate/displacement" | awk '{ m2 = $1*$1 + $2*$2; if (m2 > m) m = m2 } END { print sqrt(m) }')
+check "fsi: the plate moved ($u m)" awk -v u="$u" 'BEGIN { exit !(u > 1e-4) }'
 
 finish
