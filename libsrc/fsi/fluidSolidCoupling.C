@@ -115,13 +115,12 @@ void fluidSolidCoupling::toParticles(const particleView& v) const
 
 void fluidSolidCoupling::saveStepStart()
 {
-    startPosition_.clear();
+    // position already holds the solids' positions, in this order.
+    startPosition_ = position;
     startVelocity_.clear();
     for (const solidBody& b : solids_.bodies())
     {
         const vcpmSolid& s = *b.solid;
-        startPosition_.insert(startPosition_.end(), s.position.begin(),
-                              s.position.end());
         startVelocity_.insert(startVelocity_.end(), s.velocity.begin(),
                               s.velocity.end());
     }
@@ -145,18 +144,5 @@ void fluidSolidCoupling::restoreStepStart()
     meanVelocity = startMeanVelocity_;
 }
 
-
-vec3 fluidSolidCoupling::momentum() const
-{
-    vec3 sum{0, 0, 0};
-    for (const solidBody& b : solids_.bodies())
-    {
-        const vcpmSolid& s = *b.solid;
-        vec3 bodySum{0, 0, 0};
-        for (const vec3& u : s.velocity) bodySum += u;
-        sum += s.material().mass*bodySum;
-    }
-    return sum;
-}
 
 } // End namespace sphvcpm

@@ -695,20 +695,6 @@ void fsiSolver::advanceSolids(const bool firstHalf, const scalar dt)
 }
 
 
-vec3 fsiSolver::momentum() const
-{
-    vec3 sum{0, 0, 0};
-    for (label i = 0; i < particles_.size(); ++i)
-    {
-        if (particles_.kind[i] == fluidKind)
-        {
-            sum += particles_.mass[i]*particles_.velocity[i];
-        }
-    }
-    return coupling_ ? sum + coupling_->momentum() : sum;
-}
-
-
 // * * * * * * * * * * * * * * * * * Blow-up  * * * * * * * * * * * * * * * //
 
 std::string fsiSolver::describeParticle(const label i) const

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 #include "functionObjects.H"
 #include "error.H"
+#include "fluidInteractions.H"
 #include "parallel.H"
 #include "withKernel.H"
 
@@ -416,8 +417,9 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
                 const scalar mf = pf.mass[j];
                 const scalar rhof = pf.rho[j];
                 // a_f -= m_w (p_f + p_w)/(rho_f rho_w) G x_fw
-                // Tension is not transmitted to a solid (fluidPairTerms).
-                const scalar pf_j = solid && pf.p[j] < 0 ? 0 : pf.p[j];
+                // As the pair terms see it (fluidPairTerms).
+                const scalar pf_j =
+                    solid ? pressureTowardSolid(pf.p[j]) : pf.p[j];
                 f += (mf*mw*(pf_j + pw)/(rhof*rhow)*G)*d;
                 if (laminar)
                 {
