@@ -47,14 +47,6 @@ void fluidSolidCoupling::copyPositions()
 }
 
 
-void fluidSolidCoupling::collectFluidForce(const particleView& v,
-                                           const bool atStepStart)
-{
-    parallelFor(openmpExec{}, v.n, fluidForceOnSolidOp{v, fluidForce.data()});
-    if (atStepStart) fluidForceAtStart = fluidForce;
-}
-
-
 label fluidSolidCoupling::advance(const scalar dt,
                                   const std::vector<vec3>& force)
 {
@@ -103,13 +95,6 @@ label fluidSolidCoupling::advanceSecondHalf(const scalar dt)
         heldForce_[i] = scalar(2)*fluidForce[i] - fluidForceAtStart[i];
     }
     return advance(dt, heldForce_);
-}
-
-
-void fluidSolidCoupling::toParticles(const particleView& v) const
-{
-    parallelFor(openmpExec{}, v.n, solidToParticlesOp{v, position.data(),
-        meanVelocity.data()});
 }
 
 

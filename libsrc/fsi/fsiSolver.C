@@ -1,7 +1,7 @@
 /*---------------------------------------------------------------------------*\
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
-#include "fsiSolver.H"
+#include "fsiSolverSteps.H"
 #include "argList.H"
 #include "error.H"
 #include "fluidInteractions.H"
@@ -23,38 +23,37 @@ namespace sphvcpm
 
 namespace fs = std::filesystem;
 
-namespace
-{
-
-std::string str(const scalar v, int precision = 6)
-{
-    std::ostringstream os;
-    os << std::setprecision(precision) << v;
-    return os.str();
-}
-
-std::string str(const vec3& v)
-{
-    return "(" + str(v.x, 8) + " " + str(v.y, 8) + " " + str(v.z, 8) + ")";
-}
-
-} // End anonymous namespace
+using fsiFormat::str;
 
 
 // * * * * * * * * * * * * * * * * Construction * * * * * * * * * * * * * * //
 
-fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log)
+fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
+                     const std::string& device)
 :
     caseDir_(caseDir),
     log_(log),
     control_(timeControl::read(caseDir))
 {
-    if (control_.device != "cpu")
+    const std::string chosen = device.empty() ? control_.device : device;
+    if (chosen == "cuda" && !gpuAvailable())
     {
-        fatalIOError((caseDir/"system/controlDict").string(),
-            control_.dict.lookupEntry("device").line(),
-            "device " + control_.device + " is not available in this"
-            " build of sphVcpmFsi; use device cpu", "device");
+        const std::string why = cudaBackendBuilt()
+          ? cudaDeviceInfo().reason
+          : "this build has no CUDA backend (nvcc was not found)";
+        const std::string what = "device cuda was asked for, but no GPU can"
+            " be used: " + why + ". Run on the CPU with -device cpu (or"
+            " device cpu; in system/controlDict)";
+        if (device.empty())
+        {
+            fatalIOError((caseDir/"system/controlDict").string(),
+                control_.dict.lookupEntry("device").line(), what, "device");
+        }
+        fatalError(what);
+    }
+    else if (chosen != "cpu" && chosen != "cuda")
+    {
+        fatalError("-device " + chosen + ": expected cpu or cuda");
     }
     readStartTime();
     setSoundSpeed();
@@ -96,10 +95,20 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log)
     functions_ = functionObject::readAll(control_.dict, caseDir_,
         startTimeName_, model_, bodies_);
 
-    sortParticles();
+    hostParticleStore store = hostStore();
+    sortOn(store);
     parallelFor(openmpExec{}, particles_.size(),
         pressureOp{particles_.view(), eos_});
-    updateWalls();
+    updateWallsOn(store);
+
+    if (chosen == "cuda")
+    {
+        // The particles move to the GPU once; they come back for writes,
+        // function objects and diagnoses.
+        startGpu();
+        log_<< "Device: " << cudaDeviceInfo().describe() << "\n"
+            << std::endl;
+    }
 }
 
 
@@ -438,128 +447,9 @@ void fsiSolver::setDomain()
 
 // * * * * * * * * * * * * * * * * * * Steps  * * * * * * * * * * * * * * * //
 
-void fsiSolver::sortParticles()
+hostParticleStore fsiSolver::hostStore()
 {
-    const label n = particles_.size();
-    buildCellList(openmpExec{}, grid_, particles_.position.data(), n, cells_);
-    const label nInside = cells_.nInside;
-    if (nInside < n)
-    {
-        // Particles past the domain bounds sorted to the end: count them
-        // per body, then drop them.
-        std::map<int, label> lost;
-        for (label k = nInside; k < n; ++k)
-        {
-            const label i = cells_.order[k];
-            if (particles_.kind[i] != fluidKind)
-            {
-                fatalError(std::string(particles_.kind[i] == wallKind
-                    ? "Wall" : "Solid") + " particle " + describeParticle(i)
-                    + " lies outside the domain bounds " + str(grid_.origin)
-                    + " .. " + str(model_.domainMax)
-                    + ": enlarge the domain of system/sphSchemes");
-            }
-            if (!isFinite(particles_.position[i]))
-            {
-                blowUp(i, "a non-finite position", false, false, 0);
-            }
-            ++lost[particles_.body[i]];
-        }
-        for (const auto& [b, count] : lost)
-        {
-            bodies_[b].nRemoved += count;
-            log_<< "Removed " << count << " particle"
-                << (count > 1 ? "s" : "") << " of " << bodies_[b].name
-                << " that left the domain (" << bodies_[b].nRemoved
-                << " in all)" << std::endl;
-        }
-    }
-    particles_.reorder(cells_.order, nInside, model_.sps,
-                       model_.shifting != shiftingType::none);
-
-    // Which walls have fluid near them this step.
-    cellHasFluid_.resize(grid_.nCells());
-    nearFluid_.resize(nInside);
-    parallelFor(openmpExec{}, grid_.nCells(), cellHasFluidOp{
-        cells_.cellStart.data(), particles_.kind.data(),
-        cellHasFluid_.data()});
-    parallelFor(openmpExec{}, nInside, nearFluidOp{grid_, cells_.keys.data(),
-        particles_.kind.data(), cellHasFluid_.data(), nearFluid_.data()});
-}
-
-
-void fsiSolver::updateWalls()
-{
-    const particleView v = particles_.view();
-    const scalar support2 = 4*model_.h*model_.h;
-    withKernel(model_, [&](auto kernel)
-    {
-        using K = decltype(kernel);
-        parallelFor(openmpExec{}, v.n, adamiWallOp<K>{kernel, grid_,
-            cells_.cellStart.data(), v, eos_, support2, model_.g,
-            nearFluid_.data()});
-        if (model_.sps)
-        {
-            const scalar filter = model_.dp
-                /std::sqrt(scalar(model_.nDimensions));
-            const scalar cs = model_.smagorinsky*filter;
-            parallelFor(openmpExec{}, v.n, spsStressOp<K>{kernel, grid_,
-                cells_.cellStart.data(), v, support2, cs*cs,
-                (2.0/3.0)*model_.blinn*filter*filter});
-        }
-    });
-}
-
-
-void fsiSolver::computeRates(scalar& maxAcc2, scalar& maxVisc,
-                             scalar& maxVel2, label& firstBad)
-{
-    const particleView v = particles_.view();
-    pairConstants c;
-    c.h = model_.h;
-    c.support2 = 4*model_.h*model_.h;
-    c.eta2 = model_.eta2();
-    c.c0 = model_.c0;
-    c.rho0 = model_.rho0;
-    c.g = model_.g;
-    c.laminar = model_.viscosity == viscosityType::laminar;
-    c.fourNu = 4*model_.nu;
-    c.alphaC0H = model_.alpha*model_.c0*model_.h;
-    c.ddtCoefficient =
-        model_.densityDiffusion == densityDiffusionType::none
-      ? 0 : model_.delta*2*model_.h*model_.c0;
-    c.hydrostaticFactor =
-        model_.densityDiffusion == densityDiffusionType::fourtakas
-      ? model_.rho0/(model_.c0*model_.c0) : 0;
-    c.sps = model_.sps;
-    c.shifting = model_.shifting != shiftingType::none;
-    c.shiftNoBoundary = model_.shiftNoBoundary;
-    c.tensileInvWdp = model_.kernel == kernelType::cubicSpline
-      ? 1/cubicSplineKernel(model_.h, model_.nDimensions).W(model_.dp) : 0;
-
-    viscTerm_.resize(v.n);
-    withKernel(model_, [&](auto kernel)
-    {
-        using K = decltype(kernel);
-        if (c.shifting)
-        {
-            parallelFor(openmpExec{}, v.n, inverseDensityOp{v});
-            parallelFor(openmpExec{}, v.n, fluidRatesLoopOp<K>{
-                {kernel, grid_, cells_.cellStart.data(), v, c},
-                viscTerm_.data()});
-            return;
-        }
-        // Without shifting: each pair once (half the pair work).
-        pairRates(openmpExec{}, kernel, cells_, nearFluid_.data(), v, c,
-                  viscTerm_.data());
-    });
-    const stepTerms t = parallelReduce(openmpExec{}, v.n,
-        stepTermsOfRatesOp{v, viscTerm_.data(), model_.g},
-        stepTerms::identity(v.n), stepTermsOp{});
-    maxAcc2 = t.maxAcc2;
-    maxVisc = t.maxVisc;
-    maxVel2 = t.maxVel2;
-    firstBad = t.firstBad;
+    return {particles_, cells_, cellHasFluid_, nearFluid_, viscTerm_};
 }
 
 
@@ -592,106 +482,13 @@ scalar fsiSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
 
 void fsiSolver::step()
 {
-    sortParticles();
-    particleView v = particles_.view();
-
-    updateWalls();
-    scalar maxAcc2, maxVisc, maxVel2;
-    label bad;
-    computeRates(maxAcc2, maxVisc, maxVel2, bad);
-    if (bad < v.n)
+    if (gpu_)
     {
-        blowUp(bad, "a non-finite acceleration or density rate", false,
-               false, 0);
+        stepGpu();
+        return;
     }
-
-    if (coupling_)
-    {
-        coupling_->collectFluidForce(v, true);
-        coupling_->saveStepStart();
-    }
-
-    const scalar dt = chooseDeltaT(maxAcc2, maxVisc, maxVel2);
-    if (dt < control_.minDeltaT && !schedule_->landed())
-    {
-        // The particle that limits the step.
-        label worst = 0;
-        scalar worstAcc = -1;
-        for (label i = 0; i < v.n; ++i)
-        {
-            if (v.kind[i] != fluidKind) continue;
-            const scalar a = magSqr(v.acceleration[i] + model_.g);
-            if (a > worstAcc) { worstAcc = a; worst = i; }
-        }
-        blowUp(worst, "a time step of " + str(dt) + " s, below minDeltaT "
-            + str(control_.minDeltaT) + " s (the largest acceleration, "
-            + str(std::sqrt(worstAcc)) + " m/s^2, is at this particle)",
-            false, false, 0);
-    }
-
-    parallelFor(openmpExec{}, v.n, predictorOp{v, eos_, model_.g, dt});
-    if (coupling_) advanceSolids(true, dt);
-
-    updateWalls();
-    computeRates(maxAcc2, maxVisc, maxVel2, bad);
-    if (bad < v.n)
-    {
-        blowUp(bad, "a non-finite acceleration or density rate", true,
-               false, dt);
-    }
-
-    correctorOp corrector{v, eos_, model_.g, dt,
-        model_.shifting != shiftingType::none,
-        model_.shiftCoefficient*model_.h, model_.shiftFreeSurface,
-        scalar(model_.nDimensions), model_.maxShiftFraction*model_.dp};
-    bad = parallelReduce(openmpExec{}, v.n, corrector, v.n, minOp());
-    if (bad < v.n)
-    {
-        blowUp(bad, "a non-finite or non-positive density, velocity or"
-            " position", true, true, dt);
-    }
-    if (coupling_)
-    {
-        coupling_->collectFluidForce(v, false);
-        advanceSolids(false, dt);
-    }
-
-    deltaT0_ = deltaT_;
-    deltaT_ = dt;
-    time_ += dt;
-    if (schedule_->landed())
-    {
-        // Exactly on the target, so that names and restarts agree.
-        time_ = schedule_->landingTime();
-    }
-    ++timeIndex_;
-    ++stepsRun_;
-    particleSteps_ += v.n;
-}
-
-
-void fsiSolver::advanceSolids(const bool firstHalf, const scalar dt)
-{
-    const label n = firstHalf ? coupling_->advanceFirstHalf(0.5*dt)
-                              : coupling_->advanceSecondHalf(0.5*dt);
-    solidSubSteps_ += n;
-    const std::string bad = solids_->firstNonFinite();
-    if (!bad.empty())
-    {
-        // The solid particle in the fluid's set, for the diagnosis.
-        label worst = 0;
-        for (label i = 0; i < particles_.size(); ++i)
-        {
-            if (particles_.kind[i] != solidKind) continue;
-            const vec3 x = coupling_->position[particles_.link[i]];
-            if (!isFinite(x)) { worst = i; break; }
-        }
-        blowUp(worst, "a non-finite position in the solid sub-cycle (" + bad
-            + "); the fluid force on it was "
-            + str(coupling_->fluidForce[particles_.link[worst]]) + " N",
-            true, !firstHalf, dt);
-    }
-    coupling_->toParticles(particles_.view());
+    hostParticleStore store = hostStore();
+    stepOn(store);
 }
 
 
@@ -740,7 +537,7 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
     if (coupling_ && undoPredictor)
     {
         coupling_->restoreStepStart();
-        coupling_->toParticles(v);
+        hostStore().putSolids(coupling_->position, coupling_->meanVelocity);
     }
     // Only a finite state is worth writing.
     bool finite = true;
@@ -771,22 +568,23 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
 
 double fsiSolver::countInteractions()
 {
-    const particleView v = particles_.view();
-    const scalar support2 = 4*model_.h*model_.h;
-    const cellGrid grid = grid_;
-    const label* cellStart = cells_.cellStart.data();
-    return parallelReduce(openmpExec{}, v.n, [=](const label i)
+    if (gpu_)
     {
-        double count = 0;
-        if (v.kind[i] != fluidKind) return count;
-        const vec3 xi = v.position[i];
-        forEachCandidate(grid, cellStart, xi, [&](const label j) SPHVCPM_INLINE
-        {
-            if (j != i && magSqr(xi - v.position[j]) < support2) ++count;
-        });
-        return count;
-    }, 0.0, sumOp());
+        return countInteractionsGpu();
+    }
+    hostParticleStore store = hostStore();
+    return countInteractionsOn(store);
 }
+
+
+#ifndef SPHVCPM_HAVE_CUDA
+// Without the CUDA backend the constructor stops before any of these runs.
+void cudaParticleStoreDeleter::operator()(cudaParticleStore*) const {}
+void fsiSolver::startGpu() { fatalError("no CUDA backend in this build"); }
+void fsiSolver::stepGpu() {}
+void fsiSolver::gpuToHost() {}
+double fsiSolver::countInteractionsGpu() { return 0; }
+#endif
 
 
 void fsiSolver::write()
@@ -860,6 +658,13 @@ void fsiSolver::write()
 
 void fsiSolver::executeFunctions()
 {
+    if (gpu_)
+    {
+        bool due = false;
+        for (const auto& f : functions_) due = due || f->due(time_, timeIndex_);
+        if (!due) return;
+        gpuToHost();
+    }
     const solverSnapshot s{particles_, cells_, model_, bodies_, time_,
                            timeIndex_, deltaT_, &solidViews_};
     for (auto& f : functions_)
@@ -895,6 +700,7 @@ void fsiSolver::run()
         const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
         if (schedule_->due(time_, timeIndex_) || atEnd)
         {
+            if (gpu_) gpuToHost();
             write();
             schedule_->written(time_, control_.name(time_), caseDir_,
                                startTimeName_);
@@ -922,6 +728,14 @@ void fsiSolver::run()
         << " G interactions/s (" << str(meanPairs/std::max<label>(1,
             particles_.size()), 4) << " neighbours per particle, 2 force"
            " passes per step), " << openmpThreads() << " threads\n";
+    if (gpu_)
+    {
+        const gpuInfo info = cudaDeviceInfo();
+        log_<< "    GPU memory in use at the end: "
+            << str((info.totalMemory - info.freeMemory)/1073741824.0, 4)
+            << " GiB of " << str(info.totalMemory/1073741824.0, 4)
+            << " GiB (" << info.name << ")\n";
+    }
     if (coupling_)
     {
         log_<< "    solids: " << coupling_->size() << " particles, "

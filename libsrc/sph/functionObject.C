@@ -75,22 +75,26 @@ functionObject::functionObject(std::string name, const dictionary& dict,
 
 // * * * * * * * * * * * * * * * Member functions * * * * * * * * * * * * * //
 
+bool functionObject::due(const scalar time, const label timeIndex) const
+{
+    if (std::isnan(nextSampleTime_))
+    {
+        return true;
+    }
+    return writeControl_ == "timeStep"
+        ? timeIndex % label(writeInterval_) == 0
+        : time >= nextSampleTime_
+                  - functionObjects::timeTolerance*writeInterval_;
+}
+
+
 void functionObject::execute(const solverSnapshot& s)
 {
-    const bool first = std::isnan(nextSampleTime_);
-    const bool timeStep = writeControl_ == "timeStep";
-    bool due = first;
-    if (!first)
-    {
-        due = timeStep
-            ? s.timeIndex % label(writeInterval_) == 0
-            : s.time >= nextSampleTime_
-                      - functionObjects::timeTolerance*writeInterval_;
-    }
-    if (!due)
+    if (!due(s.time, s.timeIndex))
     {
         return;
     }
+    const bool timeStep = writeControl_ == "timeStep";
 
     sample(s);
 

@@ -2,11 +2,12 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 // sphVcpmFsi: weakly compressible SPH for free-surface flow between rigid
-// walls, or elastic VCPM solids alone when the case has no fluid (the
-// coupling of the two joins in a later version). Reads the case, advances
-// it to endTime and writes time directories and postProcessing/.
+// walls, coupled to elastic VCPM solids, or the solids alone when the case
+// has no fluid. Reads the case, advances it to endTime on the CPU or the
+// GPU and writes time directories and postProcessing/.
 
 #include "argList.H"
+#include "cudaDevice.H"
 #include "error.H"
 #include "solidOnlySolver.H"
 #include "fsiSolver.H"
@@ -29,23 +30,33 @@ int main(int argc, char* argv[])
             " and no fluid runs the VCPM solids alone (constant/"
             "solidProperties);\nit writes <time>/<solid>/{position,U,"
             "displacement,stress*,vonMises,...}.");
+        args.addOption("device", "cpu|cuda",
+            "where to run (overrides controlDict's device)");
         if (!args.parse(argc, argv))
         {
             return 0;
         }
-        args.printBanner();
+        const timeControl control = timeControl::read(args.casePath());
+        const std::string device =
+            args.optionOrDefault("device", control.device);
+        args.printBanner(device == "cuda" && gpuAvailable()
+            ? cudaDeviceInfo().describe() : "cpu");
 
         // No fluid: the solids alone, without building any SPH data.
-        const std::string startTime = startTimeName(args.casePath(),
-            timeControl::read(args.casePath()));
+        const std::string startTime = startTimeName(args.casePath(), control);
         if (solidOnlySolver::applies(args.casePath(), startTime))
         {
+            if (device == "cuda")
+            {
+                std::cout << "The case has no fluid: its solids run alone,"
+                    " on the CPU\n" << std::endl;
+            }
             solidOnlySolver solver(args.casePath(), startTime, std::cout);
             solver.run();
         }
         else
         {
-            fsiSolver solver(args.casePath(), std::cout);
+            fsiSolver solver(args.casePath(), std::cout, device);
             solver.run();
         }
 

@@ -1,0 +1,309 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The GPU side of fsiSolver: the particles in device memory
+// (cudaParticleStore, the device twin of hostParticleStore) and the step of
+// fsiSolverSteps.H instantiated on it. The particles stay on the GPU
+// between steps; they come back to the host for writes, function objects
+// and diagnoses. The solids' sub-cycle runs on the host: per half step only
+// the solid particles' force, position and mean velocity cross the bus.
+#include "fsiSolverSteps.H"
+#include "parallelCuda.cuh"
+
+namespace sphvcpm
+{
+
+namespace
+{
+
+// The fields that live across steps, into the sorted order (the first n
+// particles of order); the step fields are the targets, as on the host.
+struct reorderOp
+{
+    const label* order;
+    const vec3* position;   vec3* newPosition;
+    const vec3* velocity;   vec3* newVelocity;
+    const scalar* rho;      scalar* newRho;
+    const scalar* p;        scalar* newP;
+    const scalar* mass;     scalar* newMass;
+    const std::uint8_t* kind;   std::uint8_t* newKind;
+    const std::uint8_t* body;   std::uint8_t* newBody;
+    const label* id;        label* newId;
+    const label* link;      label* newLink;    // nullptr without solids
+
+    SPHVCPM_HD void operator()(const label k) const
+    {
+        const label old = order[k];
+        newPosition[k] = position[old];
+        newVelocity[k] = velocity[old];
+        newRho[k] = rho[old];
+        newP[k] = p[old];
+        newMass[k] = mass[old];
+        newKind[k] = kind[old];
+        newBody[k] = body[old];
+        newId[k] = id[old];
+        if (link) newLink[k] = link[old];
+    }
+};
+
+// Grows a buffer to at least n elements (contents not kept).
+template<class T>
+T* atLeast(deviceBuffer<T>& buffer, const label n)
+{
+    if (buffer.size() < n) buffer.resize(n);
+    return buffer.data();
+}
+
+template<class T>
+void download(const deviceBuffer<T>& from, std::vector<T>& to, const label n)
+{
+    to.resize(n);
+    if (n > 0) from.copyToHost(to.data(), n);
+}
+
+template<class T>
+void upload(deviceBuffer<T>& to, const std::vector<T>& from)
+{
+    to.resize(label(from.size()));
+    if (!from.empty()) to.copyFromHost(from);
+}
+
+} // End anonymous namespace
+
+
+struct cudaParticleStore
+{
+    using execType = cudaExec;
+    static constexpr bool pairForm = false;
+
+    particleFields& host;
+    cellList& hostCells;
+    const bool withSps;
+    const bool withShifting;
+    const bool withLink;
+
+    // The particles: n in use; buffers are never shrunk, as particles
+    // only leave.
+    label n = 0;
+    deviceBuffer<vec3> position, velocity, velocity0, acceleration;
+    deviceBuffer<scalar> rho, p, mass, rho0, drho, invRho;
+    deviceBuffer<std::uint8_t> kind, body, newKind, newBody;
+    deviceBuffer<label> id, link, newId, newLink;
+    deviceBuffer<symmTensor> tau;
+    deviceBuffer<vec3> shiftGradient;
+    deviceBuffer<scalar> divR;
+
+    // The cell list and the per-step flags.
+    cellGrid grid;
+    label nInside = 0;
+    deviceBuffer<std::uint32_t> keysOf;
+    deviceBuffer<label> order, cellStartOf;
+    deviceBuffer<std::uint8_t> cellHasFluidOf, nearFluidOf;
+    deviceBuffer<scalar> viscTermOf;
+
+    // The solids' particles by solid index.
+    deviceBuffer<vec3> solidForceOf, solidPositionOf, solidMeanVelocityOf;
+
+    cudaParticleStore(particleFields& h, cellList& cells, const bool sps,
+                      const bool shifting)
+    :
+        host(h),
+        hostCells(cells),
+        withSps(sps),
+        withShifting(shifting),
+        withLink(!h.link.empty()),
+        n(h.size())
+    {
+        upload(position, host.position);
+        upload(velocity, host.velocity);
+        upload(rho, host.rho);
+        upload(p, host.p);
+        upload(mass, host.mass);
+        upload(kind, host.kind);
+        upload(body, host.body);
+        upload(id, host.id);
+        upload(link, host.link);
+        for (deviceBuffer<vec3>* b : {&velocity0, &acceleration}) b->resize(n);
+        for (deviceBuffer<scalar>* b : {&rho0, &drho, &invRho}) b->resize(n);
+        newKind.resize(n);
+        newBody.resize(n);
+        newId.resize(n);
+        newLink.resize(withLink ? n : 0);
+        tau.resize(withSps ? n : 0);
+        shiftGradient.resize(withShifting ? n : 0);
+        divR.resize(withShifting ? n : 0);
+
+        // The host's list matches the host's (sorted) particles.
+        grid = cells.grid;
+        nInside = cells.nInside;
+        upload(keysOf, cells.keys);
+        upload(order, cells.order);
+        upload(cellStartOf, cells.cellStart);
+    }
+
+    execType exec() const { return {}; }
+    label size() const { return n; }
+
+    particleView view()
+    {
+        return particleView
+        {
+            n,
+            position.data(), velocity.data(), rho.data(), p.data(),
+            mass.data(), kind.data(), body.data(), id.data(),
+            velocity0.data(), rho0.data(), acceleration.data(), drho.data(),
+            invRho.data(),
+            withSps ? tau.data() : nullptr,
+            withShifting ? shiftGradient.data() : nullptr,
+            withShifting ? divR.data() : nullptr,
+            withLink ? link.data() : nullptr
+        };
+    }
+
+    label sortByCell(const cellGrid& g)
+    {
+        grid = g;
+        label* cellStart = atLeast(cellStartOf, grid.nCells() + 1);
+        if (n > 0)
+        {
+            parallelFor(cudaExec{}, n,
+                detail::cellKeyOp{grid, position.data(), keysOf.data(),
+                                  order.data()});
+            sortByKey(cudaExec{}, keysOf.data(), order.data(), n);
+        }
+        parallelFor(cudaExec{}, grid.nCells() + 1,
+            detail::cellStartOp{keysOf.data(), cellStart, n});
+        copyDeviceToHost(&nInside, cellStart + grid.nCells(), sizeof(label));
+        return nInside;
+    }
+
+    std::vector<outsideParticle> outside() const
+    {
+        // Rare (a particle left the domain): the whole arrays come over.
+        std::vector<label> o;
+        std::vector<std::uint8_t> k, b;
+        std::vector<vec3> x;
+        download(order, o, n);
+        download(kind, k, n);
+        download(body, b, n);
+        download(position, x, n);
+        std::vector<outsideParticle> out;
+        for (label s = nInside; s < n; ++s)
+        {
+            const label i = o[s];
+            out.push_back({i, k[i], b[i], x[i]});
+        }
+        return out;
+    }
+
+    void keepInside(bool, bool)
+    {
+        parallelFor(cudaExec{}, nInside, reorderOp{order.data(),
+            position.data(), velocity0.data(),
+            velocity.data(), acceleration.data(),
+            rho.data(), rho0.data(),
+            p.data(), drho.data(),
+            mass.data(), invRho.data(),
+            kind.data(), newKind.data(),
+            body.data(), newBody.data(),
+            id.data(), newId.data(),
+            withLink ? link.data() : nullptr, newLink.data()});
+        std::swap(position, velocity0);
+        std::swap(velocity, acceleration);
+        std::swap(rho, rho0);
+        std::swap(p, drho);
+        std::swap(mass, invRho);
+        std::swap(kind, newKind);
+        std::swap(body, newBody);
+        std::swap(id, newId);
+        std::swap(link, newLink);
+        n = nInside;
+    }
+
+    const label* cellStart() const { return cellStartOf.data(); }
+    const std::uint32_t* keys() const { return keysOf.data(); }
+
+    std::uint8_t* cellHasFluid(const label nCells)
+    {
+        return atLeast(cellHasFluidOf, nCells);
+    }
+    std::uint8_t* nearFluid(const label m) { return atLeast(nearFluidOf, m); }
+    scalar* viscTerm(const label m) { return atLeast(viscTermOf, m); }
+
+    void solidForce(std::vector<vec3>& force)
+    {
+        vec3* f = atLeast(solidForceOf, label(force.size()));
+        parallelFor(cudaExec{}, n, fluidForceOnSolidOp{view(), f});
+        solidForceOf.copyToHost(force.data(), label(force.size()));
+    }
+
+    void putSolids(const std::vector<vec3>& x,
+                   const std::vector<vec3>& meanVelocity)
+    {
+        upload(solidPositionOf, x);
+        upload(solidMeanVelocityOf, meanVelocity);
+        parallelFor(cudaExec{}, n, solidToParticlesOp{view(),
+            solidPositionOf.data(), solidMeanVelocityOf.data()});
+    }
+
+    // The particles and the cell list into the host's arrays.
+    void toHost()
+    {
+        host.resize(n, withSps, withShifting);
+        download(position, host.position, n);
+        download(velocity, host.velocity, n);
+        download(rho, host.rho, n);
+        download(p, host.p, n);
+        download(mass, host.mass, n);
+        download(kind, host.kind, n);
+        download(body, host.body, n);
+        download(id, host.id, n);
+        download(link, host.link, withLink ? n : 0);
+        download(velocity0, host.velocity0, n);
+        download(acceleration, host.acceleration, n);
+        download(rho0, host.rho0, n);
+        download(drho, host.drho, n);
+        download(invRho, host.invRho, n);
+        download(tau, host.tau, withSps ? n : 0);
+        download(shiftGradient, host.shiftGradient, withShifting ? n : 0);
+        download(divR, host.divR, withShifting ? n : 0);
+        hostCells.grid = grid;
+        hostCells.nInside = nInside;
+        download(keysOf, hostCells.keys, n);
+        download(order, hostCells.order, n);
+        download(cellStartOf, hostCells.cellStart, grid.nCells() + 1);
+    }
+};
+
+
+void cudaParticleStoreDeleter::operator()(cudaParticleStore* store) const
+{
+    delete store;
+}
+
+
+void fsiSolver::startGpu()
+{
+    gpu_.reset(new cudaParticleStore(particles_, cells_, model_.sps,
+        model_.shifting != shiftingType::none));
+}
+
+
+void fsiSolver::stepGpu()
+{
+    stepOn(*gpu_);
+}
+
+
+void fsiSolver::gpuToHost()
+{
+    gpu_->toHost();
+}
+
+
+double fsiSolver::countInteractionsGpu()
+{
+    return countInteractionsOn(*gpu_);
+}
+
+} // End namespace sphvcpm
