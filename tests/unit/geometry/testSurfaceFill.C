@@ -585,8 +585,7 @@ std::vector<vec3> fill2D(const surfaceCase& c, const std::string& text,
     return lattice(origin, dp, 2).fill(r);
 }
 
-// Distance from p to the polyline through pts (exact) and the index of
-// the nearest segment's start.
+// Distance from p to the polyline through pts (exact).
 scalar polylineDistance(const vec3& p, const std::vector<vec3>& pts)
 {
     scalar best = 1e300;
@@ -764,8 +763,6 @@ TEST(surfaceFill, layersOn2DOpenTankMatchExactDistances)
             above += here && p.y > 1;
         }
         EXPECT_EQ(nodes.size(), expected) << side;
-        // Each end rounds over 2 x 2 nodes minus the corner one outside
-        // the quarter circle... the rounding is there.
         EXPECT_GT(above, 0u) << side;
         for (const vec3& p : nodes)
         {
@@ -831,7 +828,15 @@ TEST(surfaceFill, generatorFills2DTankFromSTLWithWallsAndWater)
     EXPECT_EQ(gen.summaries()[1].name, "water");
     EXPECT_EQ(gen.summaries()[1].nParticles, 20*8);
     EXPECT_EQ(gen.summaries()[1].nDropped, 0);
-    // Walls: 3 rows under the floor (26 wide with the corners), 3 columns
-    // up each wall to the rim, and the two quarter circles past it.
-    EXPECT_GT(gen.summaries()[0].nParticles, 26*3 + 2*3*20);
+    // Walls: the nodes outside the U within 3 dp of it, rounding its ends.
+    const std::vector<vec3> u{{0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    std::int64_t expected = 0;
+    for (int j = -10; j < 30; ++j)
+    for (int i = -10; i < 30; ++i)
+    {
+        const vec3 p{(i + 0.5)*0.05, (j + 0.5)*0.05, 0};
+        const bool out = p.x < 0 || p.x > 1 || p.y < 0;
+        expected += out && polylineDistance(p, u) <= 0.15*(1 + 1e-9);
+    }
+    EXPECT_EQ(gen.summaries()[0].nParticles, expected);
 }
