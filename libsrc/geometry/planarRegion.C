@@ -16,15 +16,26 @@ namespace sphvcpm
 namespace
 {
 
-// Whether the horizontal line at y crosses s, and where.
-inline bool crossing(const planarRegion::segment& s, scalar y, scalar& x)
+// Whether the line along axis through v (the other coordinate) crosses s,
+// and where along the axis.
+inline bool crossing
+(
+    const planarRegion::segment& s,
+    int axis,
+    scalar v,
+    scalar& u
+)
 {
-    if ((s.y0 <= y) == (s.y1 <= y))
+    const scalar u0 = axis == 0 ? s.x0 : s.y0;
+    const scalar u1 = axis == 0 ? s.x1 : s.y1;
+    const scalar v0 = axis == 0 ? s.y0 : s.x0;
+    const scalar v1 = axis == 0 ? s.y1 : s.x1;
+    if ((v0 <= v) == (v1 <= v))
     {
         return false;
     }
-    const scalar t = (y - s.y0)/(s.y1 - s.y0);
-    x = s.x0 + t*(s.x1 - s.x0);
+    const scalar t = (v - v0)/(v1 - v0);
+    u = u0 + t*(u1 - u0);
     return true;
 }
 
@@ -41,62 +52,89 @@ planarRegion::planarRegion(std::vector<segment> segments)
         bounds_.add(vec3{s.x0, s.y0, 0});
         bounds_.add(vec3{s.x1, s.y1, 0});
     }
-    if (segments_.empty() || !std::isfinite(bounds_.max.y - bounds_.min.y))
+    binSegments(0);
+    binSegments(1);
+}
+
+
+void planarRegion::binSegments(int axis)
+{
+    bins& b = bins_[axis];
+    const int across = 1 - axis;
+    if
+    (
+        segments_.empty()
+     || !std::isfinite(bounds_.max[across] - bounds_.min[across])
+    )
     {
-        start_.assign(2, 0);
-        items_.resize(segments_.size());
-        for (std::size_t i = 0; i < items_.size(); ++i)
+        b.n = 1;
+        b.start.assign(2, 0);
+        b.items.resize(segments_.size());
+        for (std::size_t i = 0; i < b.items.size(); ++i)
         {
-            items_[i] = i;
+            b.items[i] = i;
         }
-        start_[1] = std::int64_t(items_.size());
+        b.start[1] = std::int64_t(b.items.size());
         return;
     }
 
-    // About one segment per row.
-    const scalar h = bounds_.max.y - bounds_.min.y;
-    nRows_ = std::clamp<std::int64_t>(std::int64_t(segments_.size()), 1,
-                                      1 << 20);
-    y0_ = bounds_.min.y;
-    invDy_ = h > 0 ? scalar(nRows_)/h : 0;
-    const auto row = [&](scalar y)
+    // About one segment per bin.
+    const scalar h = bounds_.max[across] - bounds_.min[across];
+    b.n = std::clamp<std::int64_t>(std::int64_t(segments_.size()), 1,
+                                   1 << 20);
+    b.lo = bounds_.min[across];
+    b.invH = h > 0 ? scalar(b.n)/h : 0;
+    const auto clamped = [&](scalar v)
     {
-        const scalar r = std::floor((y - y0_)*invDy_);
+        const scalar r = std::floor((v - b.lo)*b.invH);
         return std::clamp<std::int64_t>(r >= 0 ? std::int64_t(std::min(
-            r, scalar(nRows_))) : 0, 0, nRows_ - 1);
+            r, scalar(b.n))) : 0, 0, b.n - 1);
     };
-    buildBinLists(nRows_, segments_.size(),
+    buildBinLists(b.n, segments_.size(),
         [&](const std::size_t i, const auto& visit)
         {
             const segment& s = segments_[i];
-            const std::int64_t a = row(std::min(s.y0, s.y1));
-            const std::int64_t b = row(std::max(s.y0, s.y1));
-            for (std::int64_t r = a; r <= b; ++r)
+            const scalar v0 = across == 1 ? s.y0 : s.x0;
+            const scalar v1 = across == 1 ? s.y1 : s.x1;
+            const std::int64_t lo = clamped(std::min(v0, v1));
+            const std::int64_t hi = clamped(std::max(v0, v1));
+            for (std::int64_t r = lo; r <= hi; ++r)
             {
                 visit(r);
             }
         },
-        start_, items_);
+        b.start, b.items);
+}
+
+
+std::int64_t planarRegion::bins::of(scalar v) const
+{
+    if (n == 1)
+    {
+        return 0;
+    }
+    const scalar f = std::floor((v - lo)*invH);
+    if (!(f >= 0 && f < scalar(n)))
+    {
+        return -1;
+    }
+    return std::int64_t(f);
 }
 
 
 void planarRegion::crossings(scalar y, std::vector<scalar>& xs) const
 {
     xs.clear();
-    std::int64_t r = 0;
-    if (nRows_ > 1)
+    const bins& b = bins_[0];
+    const std::int64_t r = b.of(y);
+    if (r < 0)
     {
-        const scalar f = std::floor((y - y0_)*invDy_);
-        if (!(f >= 0 && f < scalar(nRows_)))
-        {
-            return;
-        }
-        r = std::int64_t(f);
+        return;
     }
-    for (std::int64_t k = start_[r]; k < start_[r + 1]; ++k)
+    for (std::int64_t k = b.start[r]; k < b.start[r + 1]; ++k)
     {
         scalar x;
-        if (crossing(segments_[items_[k]], y, x))
+        if (crossing(segments_[b.items[k]], 0, y, x))
         {
             xs.push_back(x);
         }
@@ -104,25 +142,27 @@ void planarRegion::crossings(scalar y, std::vector<scalar>& xs) const
 }
 
 
-bool planarRegion::inside(scalar x, scalar y) const
+bool planarRegion::parity(scalar x, scalar y, int axis) const
 {
-    if (!(y >= bounds_.min.y && y <= bounds_.max.y))
+    const scalar u = axis == 0 ? x : y;
+    const scalar v = axis == 0 ? y : x;
+    const int across = 1 - axis;
+    if (!(v >= bounds_.min[across] && v <= bounds_.max[across]))
     {
         return false;
     }
-    std::int64_t r = 0;
-    if (nRows_ > 1)
-    {
-        r = std::clamp<std::int64_t>
-        (
-            std::int64_t(std::floor((y - y0_)*invDy_)), 0, nRows_ - 1
-        );
-    }
+    const bins& b = bins_[axis];
+    const std::int64_t r = b.n > 1
+        ? std::clamp<std::int64_t>
+          (
+              std::int64_t(std::floor((v - b.lo)*b.invH)), 0, b.n - 1
+          )
+        : 0;
     int n = 0;
-    for (std::int64_t k = start_[r]; k < start_[r + 1]; ++k)
+    for (std::int64_t k = b.start[r]; k < b.start[r + 1]; ++k)
     {
-        scalar xc;
-        n += crossing(segments_[items_[k]], y, xc) && xc > x;
+        scalar uc;
+        n += crossing(segments_[b.items[k]], axis, v, uc) && uc > u;
     }
     return n & 1;
 }

@@ -9,6 +9,7 @@
 #include "triSurface.H"
 
 #include <cmath>
+#include <utility>
 #include <sstream>
 
 namespace sphvcpm
@@ -134,14 +135,45 @@ std::vector<planarRegion::segment> stlSliceShape::cut
                 lone = i;
             }
         }
-        const vec3 a = meet(f[lone], f[(lone + 1) % 3]);
-        const vec3 b = meet(f[lone], f[(lone + 2) % 3]);
-        if (a.x != b.x || a.y != b.y)
+        vec3 a = meet(f[lone], f[(lone + 1) % 3]);
+        vec3 b = meet(f[lone], f[(lone + 2) % 3]);
+        if (a.x == b.x && a.y == b.y)
         {
-            segs.push_back({a.x, a.y, b.x, b.y});
+            continue;
         }
+        // Run along z x n, so that the segment's right-hand normal is the
+        // triangle's normal projected onto the plane.
+        const vec3 n = cross(points[f[1]] - points[f[0]],
+                             points[f[2]] - points[f[0]]);
+        if ((b.x - a.x)*(-n.y) + (b.y - a.y)*n.x < 0)
+        {
+            std::swap(a, b);
+        }
+        segs.push_back({a.x, a.y, b.x, b.y});
     }
     return segs;
+}
+
+
+planarRegion stlSliceShape::cutRegion
+(
+    const triSurface& surf,
+    const std::string& name,
+    const std::string& source
+)
+{
+    planarRegion r(cut(surf.points(), surf.faces()));
+    if (r.empty())
+    {
+        const boundBox b = surf.bounds();
+        std::ostringstream os;
+        os << "Shape '" << name << "': the plane z = 0 does not cut the"
+           << " surface (its z from " << b.min.z << " to " << b.max.z
+           << "; a surface that only touches the plane is not cut):"
+           << " move it with translate";
+        fatalIOError(source, 0, os.str());
+    }
+    return r;
 }
 
 
@@ -174,18 +206,7 @@ planarRegion sliceFromDict
                << " are tiny, or set checkClosed no to fill it anyway";
             fatalIOError(in.source, 0, os.str(), "checkClosed");
         }
-        planarRegion r(stlSliceShape::cut(surf.points(), surf.faces()));
-        if (r.empty())
-        {
-            const boundBox b = surf.bounds();
-            std::ostringstream os;
-            os << "Shape '" << name << "': the plane z = 0 does not cut the"
-               << " surface (its z from " << b.min.z << " to " << b.max.z
-               << "; a surface that only touches the plane is not cut):"
-               << " move it with translate";
-            fatalIOError(in.source, 0, os.str());
-        }
-        return r;
+        return stlSliceShape::cutRegion(surf, name, in.source);
     }
     catch (const FatalError& err)
     {

@@ -5,6 +5,7 @@
 
 #include "surfaceLayersShape.H"
 #include "error.H"
+#include "polygonShape.H"
 #include "stlShape.H"
 
 namespace sphvcpm
@@ -22,11 +23,6 @@ surfaceLayersShape::surfaceLayersShape
     shape(std::move(name), nDimensions),
     bounds_(boundBox::invalid())
 {
-    if (nDimensions != 3)
-    {
-        dict.fatalAt("shape", "Shape '" + name_ + "': shape surfaceLayers"
-            " needs nDimensions 3");
-    }
     try
     {
         stlDetail::surfaceInput in =
@@ -47,15 +43,34 @@ surfaceLayersShape::surfaceLayersShape
             ? stlDetail::defaultMergeDistance(in.soup) : in.mergeDistance;
         surface_ = std::make_unique<triSurface>(in.soup, merge);
         stlDetail::checkRepairs(*surface_, name_, in.source, merge);
-        if (surface_->closed())
+        boundBox b;
+        if (nDimensions_ == 3)
         {
-            inside_ = std::make_unique<triSurfaceInside>(*surface_);
+            if (surface_->closed())
+            {
+                inside_ = std::make_unique<triSurfaceInside>(*surface_);
+            }
+            distance_ =
+                std::make_unique<triSurfaceDistance>(*surface_, thickness_);
+            b = surface_->bounds();
         }
-        distance_ =
-            std::make_unique<triSurfaceDistance>(*surface_, thickness_);
-
-        const boundBox b = surface_->bounds();
-        const vec3 grow{thickness_, thickness_, thickness_};
+        else
+        {
+            // The cut by z = 0, as for shape stl; closed when every
+            // segment end is shared (then even-odd decides the side).
+            cut_ = std::make_unique<planarRegion>
+            (
+                stlSliceShape::cutRegion(*surface_, name_, in.source)
+            );
+            closedCut_ = cut_->nOpenEnds() == 0;
+            cutDistance_ = std::make_unique<segmentDistance>
+            (
+                cut_->segments(), thickness_
+            );
+            b = cut_->bounds();
+        }
+        const vec3 grow{thickness_, thickness_,
+                        nDimensions_ == 3 ? thickness_ : 0};
         bounds_.add(b.min - grow);
         bounds_.add(b.max + grow);
     }
@@ -68,8 +83,37 @@ surfaceLayersShape::surfaceLayersShape
 
 bool surfaceLayersShape::inside(const vec3& p, scalar tol) const
 {
-    const triSurfaceDistance::nearest n = distance_->find(p);
-    if (n.face < 0 || n.distance <= tol || n.distance > thickness_ + tol)
+    // Nearest point within the layers and its side; whether p is inside
+    // when the surface (or cut) is closed.
+    scalar distance = 0;
+    int side = 0;
+    bool closed = false;
+    bool in = false;
+    if (nDimensions_ == 3)
+    {
+        const triSurfaceDistance::nearest n = distance_->find(p);
+        if (n.face < 0)
+        {
+            return false;
+        }
+        distance = n.distance;
+        side = n.side;
+        closed = bool(inside_);
+        in = closed && inside_->inside(p);
+    }
+    else
+    {
+        const segmentDistance::nearest n = cutDistance_->find(p);
+        if (n.segment < 0)
+        {
+            return false;
+        }
+        distance = n.distance;
+        side = n.side;
+        closed = closedCut_;
+        in = closed && cut_->inside(p.x, p.y);
+    }
+    if (distance <= tol || distance > thickness_ + tol)
     {
         return false;
     }
@@ -77,10 +121,15 @@ bool surfaceLayersShape::inside(const vec3& p, scalar tol) const
     {
         return true;
     }
-    const bool in = inside_ ? inside_->inside(p) : n.side < 0;
-    if (!inside_ && n.side == 0)
+    if (!closed)
     {
-        return false;
+        // Open: the normals decide; a point in line with a rim is on
+        // neither side.
+        if (side == 0)
+        {
+            return false;
+        }
+        in = side < 0;
     }
     return side_ == sideType::inside ? in : !in;
 }

@@ -5,6 +5,7 @@
 
 #include "triSurfaceDistance.H"
 #include "binLists.H"
+#include "segmentDistance.H"
 
 #include <algorithm>
 #include <cmath>
@@ -15,17 +16,6 @@ namespace sphvcpm
 
 namespace
 {
-
-// Nearest point of segment (a, b) to p.
-vec3 nearestOnSegment(const vec3& p, const vec3& a, const vec3& b)
-{
-    const vec3 ab = b - a;
-    const scalar len2 = dot(ab, ab);
-    const scalar t = len2 > 0
-        ? std::clamp(dot(p - a, ab)/len2, scalar(0), scalar(1))
-        : scalar(0);
-    return a + t*ab;
-}
 
 // Cells in all, at most: the grid's memory stays below about 64 MB.
 constexpr scalar maxCells = 8e6;
@@ -59,9 +49,10 @@ vec3 triSurfaceDistance::nearestOnTriangle
             return q;
         }
     }
-    const vec3 ab = nearestOnSegment(p, a, b);
-    const vec3 bc = nearestOnSegment(p, b, c);
-    const vec3 ca = nearestOnSegment(p, c, a);
+    // The edges, as segmentDistance measures them.
+    const vec3 ab = segmentDistance::nearestOnSegment(p, a, b);
+    const vec3 bc = segmentDistance::nearestOnSegment(p, b, c);
+    const vec3 ca = segmentDistance::nearestOnSegment(p, c, a);
     const scalar dab = magSqr(p - ab);
     const scalar dbc = magSqr(p - bc);
     const scalar dca = magSqr(p - ca);

@@ -4,11 +4,14 @@
 // Filling on STL surfaces: the nearest-point search (against brute force),
 // seed filling of open and closed containers (exact counts, leaks and
 // seeds outside as errors) and wall layers on either side of open and
-// closed surfaces (against exact distances to a box).
+// closed surfaces (against exact distances to a box); the same in 2D on
+// the cut of the surface by z = 0.
 
 #include "lattice.H"
 #include "particleGenerator.H"
+#include "polygonShape.H"
 #include "seedFillShape.H"
+#include "segmentDistance.H"
 #include "surfaceLayersShape.H"
 #include "testGeometryTools.H"
 #include "testStlSurfaces.H"
@@ -554,4 +557,286 @@ TEST(surfaceFill, stlCutByThePlaneZ0)
                 " translate (0 0 2);", 0.1);
     }), (c.dir.path()/"constant"/"geometry"/"box.stl").string(), 0,
         {"z = 0 does not cut", "translate"});
+}
+
+
+// * * * * * * * * * * * * seedFill and surfaceLayers in 2D * * * * * * * * //
+
+namespace
+{
+
+// The box [lo, hi] across z = 0 without its face y = hi: cut by z = 0, an
+// open 2D tank (a U), normals out.
+soup openTank2D(const vec3& lo = {0, 0, -0.5}, const vec3& hi = {1, 1, 0.5})
+{
+    soup s = cube(lo, hi);
+    s.erase(s.begin() + 18, s.begin() + 24);
+    return s;
+}
+
+// Nodes of a 2D body whose shape is text, on the lattice of dp at origin.
+std::vector<vec3> fill2D(const surfaceCase& c, const std::string& text,
+                         scalar dp, const vec3& origin = {0, 0, 0})
+{
+    const dictionary d = dictionary::fromString("s {" + text + "}",
+                                                c.dictFile());
+    region r(2);
+    r.add(shape::New("s", d.subDict("s"), 2, dp, {}, c.dir.path(), origin));
+    return lattice(origin, dp, 2).fill(r);
+}
+
+// Distance from p to the polyline through pts (exact).
+scalar polylineDistance(const vec3& p, const std::vector<vec3>& pts)
+{
+    scalar best = 1e300;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i)
+    {
+        best = std::min(best, mag(p - segmentDistance::nearestOnSegment
+            (p, pts[i], pts[i + 1])));
+    }
+    return best;
+}
+
+} // End anonymous namespace
+
+
+TEST(surfaceFill, segmentDistanceMatchesBruteForce)
+{
+    // The cut of a torus: two closed polygons, and points all around.
+    const triSurface surf(torus({0, 0, 0}, 0.35, 0.15, 48, 16), 1e-9);
+    const std::vector<planarRegion::segment> segs =
+        stlSliceShape::cut(surf.points(), surf.faces());
+    ASSERT_GT(segs.size(), 90u);
+    const scalar radius = 0.05;
+    const segmentDistance near(segs, radius);
+    std::mt19937_64 gen(7);
+    std::uniform_real_distribution<scalar> u(-0.6, 0.6);
+    int nFound = 0;
+    for (int i = 0; i < 5000; ++i)
+    {
+        const vec3 p{u(gen), u(gen), 0};
+        scalar best = 1e300;
+        int side = 0;
+        for (const planarRegion::segment& s : segs)
+        {
+            const vec3 a{s.x0, s.y0, 0}, b{s.x1, s.y1, 0};
+            const vec3 q = segmentDistance::nearestOnSegment(p, a, b);
+            if (mag(p - q) < best)
+            {
+                best = mag(p - q);
+                // Outward normals: the side is out of the annulus.
+                const scalar r = mag(p);
+                side = (r > 0.5 || r < 0.2) ? 1 : -1;
+            }
+        }
+        const segmentDistance::nearest n = near.find(p);
+        if (best <= radius*(1 - 1e-9))
+        {
+            ASSERT_GE(n.segment, 0) << i;
+            EXPECT_NEAR(n.distance, best, 1e-14) << i;
+            // Inside the annulus is against the (outward) normals.
+            const scalar r = mag(p);
+            if (std::abs(r - 0.5) > 0.01 && std::abs(r - 0.2) > 0.01)
+            {
+                EXPECT_EQ(n.side, side) << i;
+            }
+            ++nFound;
+        }
+        else if (best > radius*(1 + 1e-9))
+        {
+            EXPECT_EQ(n.segment, -1) << i;
+        }
+    }
+    EXPECT_GT(nFound, 500);
+}
+
+
+TEST(surfaceFill, seedFills2DOpenTankUpToTheLevel)
+{
+    const surfaceCase c;
+    c.add("tank.stl", openTank2D());
+    // 20 nodes across, the ones dp/2 off the walls stay: 20 x 6, with the
+    // seed given as (x y) or (x y 0); "up" is +y in 2D.
+    const std::string tank = "shape seedFill; file"
+        " \"constant/geometry/tank.stl\"; level 0.3;";
+    const std::vector<vec3> nodes = fill2D(c, tank + " seed (0.5 0.1);",
+                                           0.05);
+    EXPECT_EQ(nodes.size(), 20u*6u);
+    for (const vec3& p : nodes)
+    {
+        ASSERT_GT(p.y, 0);
+        ASSERT_LT(p.y, 0.3);
+        ASSERT_EQ(p.z, 0);
+    }
+    EXPECT_EQ(fill2D(c, tank + " seed (0.5 0.1 0);", 0.05).size(), 120u);
+
+    // A tilted "up" and a lattice shifted by a quarter dp: the nodes in the
+    // tank, at least dp/2 from its walls and below the tilted line.
+    const std::vector<vec3> tilted = fill2D(c, tank + " seed (0.5 0.1);"
+        " up (0.2 1);", 0.05, {0.0125, 0.0125, 0});
+    const vec3 up = vec3{0.2, 1, 0}/mag(vec3{0.2, 1, 0});
+    std::size_t expected = 0;
+    for (int j = -1; j < 22; ++j)
+    for (int i = -1; i < 22; ++i)
+    {
+        const vec3 p{0.0125 + (i + 0.5)*0.05, 0.0125 + (j + 0.5)*0.05, 0};
+        const bool in = p.x > 0 && p.x < 1 && p.y > 0 && p.y < 1;
+        const scalar d = std::min({p.x, 1 - p.x, p.y});
+        expected += in && d >= 0.025 && dot(p, up) < 0.3;
+    }
+    EXPECT_EQ(tilted.size(), expected);
+    EXPECT_GT(expected, 50u);
+
+    // A closed cut needs no level: the square's 10 x 10, also with
+    // flipped triangles.
+    c.add("box.stl", flipped(cube({0, 0, -0.5}, {1, 1, 0.5})));
+    EXPECT_EQ(fill2D(c, "shape seedFill; file \"constant/geometry/box.stl\";"
+                     " seed (0.5 0.5);", 0.1).size(), 100u);
+}
+
+
+TEST(surfaceFill, seedOutsideOrALeakIsAnErrorIn2D)
+{
+    const surfaceCase c;
+    c.add("tank.stl", openTank2D());
+    const std::string tank = "shape seedFill; file"
+        " \"constant/geometry/tank.stl\";";
+    const auto fill = [&](const std::string& text, scalar dp = 0.05,
+                          const vec3& origin = {0, 0, 0})
+    {
+        fill2D(c, tank + "\n" + text, dp, origin);
+    };
+    expectError(catchFatal([&] { fill("seed (2 0.5); level 0.3;"); }),
+        c.dictFile(), 2, {"Keyword 'seed'", "outside the bounding box",
+                          "cut of the surface by z = 0", "tank.stl"});
+    expectError(catchFatal([&] { fill("seed (0.5 0.1);"); }),
+        c.dictFile(), 2, {"Keyword 'seed'", "not inside a container",
+                          "give a level"});
+    expectError(catchFatal([&] { fill("seed (0.5 0.1); level 1.5;"); }),
+        c.dictFile(), 2, {"Keyword 'seed'", "leaks below level 1.5"});
+    expectError(catchFatal([&] { fill("seed (0.5 0.5); level 0.3;"); }),
+        c.dictFile(), 2, {"Keyword 'seed'", "is not below level 0.3"});
+    // The seed's node is 0.002 off the floor.
+    expectError(catchFatal([&]
+    {
+        fill("seed (0.5 0.001); level 0.3;", 0.01, {0, -0.003, 0});
+    }), c.dictFile(), 2, {"Keyword 'seed'", "closer than dp/2"});
+    expectError(catchFatal([&] { fill("seed (0.5 0.1 0.2); level 0.3;"); }),
+        c.dictFile(), 2, {"Keyword 'seed'", "give (x y)"});
+    expectError(catchFatal([&] { fill("seed (0.5 0.1); level 0.3;"
+                                      " up (0 0 1);"); }),
+        c.dictFile(), 2, {"Keyword 'up'", "give (x y)"});
+
+    // A tank the plane misses.
+    expectError(catchFatal([&]
+    {
+        fill("seed (0.5 0.1); level 0.3; translate (0 0 2);");
+    }), (c.dir.path()/"constant"/"geometry"/"tank.stl").string(), 0,
+        {"Shape 's'", "z = 0 does not cut", "translate"});
+}
+
+
+TEST(surfaceFill, layersOn2DOpenTankMatchExactDistances)
+{
+    const surfaceCase c;
+    c.add("tank.stl", openTank2D());
+    const scalar dp = 0.1;
+    // The U of the cut, and its outside: where the normals point.
+    const std::vector<vec3> u{{0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    for (const std::string side : {"outside", "inside"})
+    {
+        const std::vector<vec3> nodes = fill2D(c, "shape surfaceLayers; file"
+            " \"constant/geometry/tank.stl\"; layers 2; side " + side + ";",
+            dp);
+        // Within 2 dp of the U on that side; past the rim the layers round
+        // its ends on that side (a quarter circle each).
+        std::size_t expected = 0, above = 0;
+        for (int j = -5; j < 15; ++j)
+        for (int i = -5; i < 15; ++i)
+        {
+            const vec3 p{(i + 0.5)*dp, (j + 0.5)*dp, 0};
+            const bool out = p.x < 0 || p.x > 1 || p.y < 0;
+            const scalar d = polylineDistance(p, u);
+            const bool here = (side == "outside") == out
+                && d <= 2*dp*(1 + 1e-9);
+            expected += here;
+            above += here && p.y > 1;
+        }
+        EXPECT_EQ(nodes.size(), expected) << side;
+        EXPECT_GT(above, 0u) << side;
+        for (const vec3& p : nodes)
+        {
+            ASSERT_EQ(p.z, 0);
+        }
+    }
+    // Inside, below the rim: 2 rows along the floor and 2 columns up the
+    // walls; past the rim, the quarter circles of radius 2 dp hold 3 nodes
+    // each ((0.05, 1.05), (0.15, 1.05), (0.05, 1.15)).
+    EXPECT_EQ(fill2D(c, "shape surfaceLayers; file"
+        " \"constant/geometry/tank.stl\"; layers 2; side inside;", dp).size(),
+        10u*2u + 2u*2u*8u + 2u*3u);
+}
+
+
+TEST(surfaceFill, layersOn2DClosedCutBothSides)
+{
+    const surfaceCase c;
+    // Flipped triangles: the sides of a closed cut come from the
+    // even-odd rule, not the normals.
+    c.add("box.stl", flipped(cube({0, 0, -0.5}, {1, 1, 0.5})));
+    const scalar dp = 0.1;
+    for (const std::string side : {"outside", "inside", "both"})
+    {
+        const std::vector<vec3> nodes = fill2D(c, "shape surfaceLayers; file"
+            " \"constant/geometry/box.stl\"; layers 3; side " + side + ";",
+            dp);
+        std::size_t expected = 0;
+        for (int j = -5; j < 15; ++j)
+        for (int i = -5; i < 15; ++i)
+        {
+            const vec3 p{(i + 0.5)*dp, (j + 0.5)*dp, 0};
+            bool in;
+            const scalar d = boxDistance(p, {0, 0, -1}, {1, 1, 1}, in);
+            const scalar d2 = in ? std::min({p.x, 1 - p.x, p.y, 1 - p.y})
+                                 : d;
+            const bool sideOk = side == "both" || (side == "inside") == in;
+            expected += sideOk && d2 > 0 && d2 <= 3*dp*(1 + 1e-9);
+        }
+        EXPECT_EQ(nodes.size(), expected) << side;
+    }
+    // Inside: the 10 x 10 square less its 4 x 4 core.
+    EXPECT_EQ(fill2D(c, "shape surfaceLayers; file"
+        " \"constant/geometry/box.stl\"; layers 3; side inside;", dp).size(),
+        100u - 16u);
+}
+
+
+TEST(surfaceFill, generatorFills2DTankFromSTLWithWallsAndWater)
+{
+    const surfaceCase c;
+    c.add("tank.stl", openTank2D());
+    writeText(c.dir.path()/"system"/"generateParticlesDict",
+        "nDimensions 2;\ndp 0.05;\nbodies\n{\n"
+        "    walls { type wall; rho 1000; shapes { t { shape surfaceLayers;"
+        " file \"constant/geometry/tank.stl\"; layers 3; side outside; } } }\n"
+        "    water { type fluid; rho 1000; shapes { w { shape seedFill;"
+        " file \"constant/geometry/tank.stl\"; seed (0.5 0.1);"
+        " level 0.4; } } }\n}\n");
+    particleGenerator gen(c.dir.path(), "system/generateParticlesDict");
+    gen.generate();
+    ASSERT_EQ(gen.summaries().size(), 2u);
+    EXPECT_EQ(gen.summaries()[1].name, "water");
+    EXPECT_EQ(gen.summaries()[1].nParticles, 20*8);
+    EXPECT_EQ(gen.summaries()[1].nDropped, 0);
+    // Walls: the nodes outside the U within 3 dp of it, rounding its ends.
+    const std::vector<vec3> u{{0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    std::int64_t expected = 0;
+    for (int j = -10; j < 30; ++j)
+    for (int i = -10; i < 30; ++i)
+    {
+        const vec3 p{(i + 0.5)*0.05, (j + 0.5)*0.05, 0};
+        const bool out = p.x < 0 || p.x > 1 || p.y < 0;
+        expected += out && polylineDistance(p, u) <= 0.15*(1 + 1e-9);
+    }
+    EXPECT_EQ(gen.summaries()[0].nParticles, expected);
 }
