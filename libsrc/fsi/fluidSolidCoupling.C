@@ -2,6 +2,7 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 #include "fluidSolidCoupling.H"
+#include "error.H"
 #include "parallel.H"
 
 #include <algorithm>
@@ -56,12 +57,18 @@ label fluidSolidCoupling::advance(const scalar dt,
     {
         solidBody& body = solids_.bodies()[b];
         vcpmSolid& s = *body.solid;
-        std::copy(force.begin() + offsets_[b],
-                  force.begin() + offsets_[b + 1], s.externalForce.begin());
         // The sub-step: the largest that divides dt and is stable.
         const label n = std::max<label>(1,
             label(std::ceil(dt/body.stableDeltaT*(1 - 1e-12))));
         const scalar subDt = dt/n;
+        if (device_)
+        {
+            advanceOnDevice(b, force.data() + offsets_[b], n, subDt);
+            most = std::max(most, n);
+            continue;
+        }
+        std::copy(force.begin() + offsets_[b],
+                  force.begin() + offsets_[b + 1], s.externalForce.begin());
         s.computeForces(openmpExec{});
         for (label k = 0; k < n; ++k)
         {
@@ -129,5 +136,18 @@ void fluidSolidCoupling::restoreStepStart()
     meanVelocity = startMeanVelocity_;
 }
 
+
+
+#ifndef SPHVCPM_HAVE_CUDA
+// Without the CUDA backend the solver never asks for the device.
+void deviceSolidsDeleter::operator()(deviceSolids*) const {}
+void fluidSolidCoupling::useDevice()
+{
+    fatalError("no CUDA backend in this build");
+}
+void fluidSolidCoupling::advanceOnDevice(std::size_t, const vec3*, label,
+                                         scalar)
+{}
+#endif
 
 } // End namespace sphvcpm

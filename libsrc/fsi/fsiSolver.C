@@ -53,7 +53,8 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     }
     else if (chosen != "cpu" && chosen != "cuda")
     {
-        fatalError("-device " + chosen + ": expected cpu or cuda");
+        fatalError("device " + chosen + ": expected cpu or cuda (from -device,"
+            " $SPHVCPM_DEVICE or the device entry of system/controlDict)");
     }
     readStartTime();
     setSoundSpeed();

@@ -5,8 +5,9 @@
 // (cudaParticleStore, the device twin of hostParticleStore) and the step of
 // fsiSolverSteps.H instantiated on it. The particles stay on the GPU
 // between steps; they come back to the host for writes, function objects
-// and diagnoses. The solids' sub-cycle runs on the host: per half step only
-// the solid particles' force, position and mean velocity cross the bus.
+// and diagnoses. The solids are sub-cycled on the GPU too
+// (fluidSolidCouplingCuda.cu); per half step only the solid particles'
+// force, state and mean velocity cross the bus.
 #include "fsiSolverSteps.H"
 #include "parallelCuda.cuh"
 
@@ -286,6 +287,10 @@ void fsiSolver::startGpu()
 {
     gpu_.reset(new cudaParticleStore(particles_, cells_, model_.sps,
         model_.shifting != shiftingType::none));
+    if (coupling_)
+    {
+        coupling_->useDevice();
+    }
 }
 
 

@@ -23,6 +23,23 @@ expectFatal()
     for p in "$@"; do expectIn "$what: says /$p/" "$scratch/c/log.solver" "$p"; done
 }
 
+# The device: a bad name from the environment is an error naming where it
+# may come from; cuda without a GPU (CI) says why and stops.
+fresh
+(cd "$scratch/c" && SPHVCPM_DEVICE=gpu timeout 60 sphVcpmFsi > log.solver 2>&1)
+check "SPHVCPM_DEVICE=gpu: exit status 1" [ $? -eq 1 ]
+expectIn "SPHVCPM_DEVICE=gpu: says what is expected" "$scratch/c/log.solver" \
+    "device gpu: expected cpu or cuda .*SPHVCPM_DEVICE"
+if ! (cd "$scratch/c" && timeout 60 sphVcpmFsi -device cuda > log.solver 2>&1) \
+   && grep -q "no GPU can be used" "$scratch/c/log.solver"; then
+    pass "-device cuda without a GPU stops and says why"
+    expectIn "-device cuda without a GPU: points to the CPU" "$scratch/c/log.solver" "-device cpu"
+elif grep -q '^End' "$scratch/c/log.solver"; then
+    pass "-device cuda ran on this machine's GPU"
+else
+    fail "-device cuda neither ran nor said why"; tail -5 "$scratch/c/log.solver"
+fi
+
 fresh; rm "$scratch/c/system/sphSchemes"
 expectFatal "missing sphSchemes" "FATAL IO ERROR" "system/sphSchemes"
 

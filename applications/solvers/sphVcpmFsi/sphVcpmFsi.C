@@ -12,6 +12,7 @@
 #include "solidOnlySolver.H"
 #include "fsiSolver.H"
 
+#include <cstdlib>
 #include <iostream>
 
 using namespace sphvcpm;
@@ -31,14 +32,20 @@ int main(int argc, char* argv[])
             "solidProperties);\nit writes <time>/<solid>/{position,U,"
             "displacement,stress*,vonMises,...}.");
         args.addOption("device", "cpu|cuda",
-            "where to run (overrides controlDict's device)");
+            "where to run (overrides $SPHVCPM_DEVICE and controlDict's"
+            " device)");
         if (!args.parse(argc, argv))
         {
             return 0;
         }
         const timeControl control = timeControl::read(args.casePath());
-        const std::string device =
-            args.optionOrDefault("device", control.device);
+        // -device, else $SPHVCPM_DEVICE (so that a tutorial's Allrun runs
+        // on the GPU unchanged: SPHVCPM_DEVICE=cuda ./Allrun), else
+        // controlDict's device.
+        const char* fromEnvironment = std::getenv("SPHVCPM_DEVICE");
+        const std::string device = args.optionOrDefault("device",
+            fromEnvironment && *fromEnvironment
+          ? std::string(fromEnvironment) : control.device);
         args.printBanner(device == "cuda" && gpuAvailable()
             ? cudaDeviceInfo().describe() : "cpu");
 
