@@ -693,12 +693,14 @@ void fsiSolver::run()
 
     log_<< "Starting time loop\n" << std::endl;
     const auto wallStart = std::chrono::steady_clock::now();
+    double outputSeconds = 0;
     while (time_ < control_.endTime*(1 - 1e-12))
     {
         step();
         executeFunctions();
 
         const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
+        const auto outputStart = std::chrono::steady_clock::now();
         if (schedule_->due(time_, timeIndex_) || atEnd)
         {
             if (gpu_) gpuToHost();
@@ -709,20 +711,31 @@ void fsiSolver::run()
         if (stepsRun_ % control_.logInterval == 0 || atEnd)
         {
             interactionSamples_ += countInteractions();
+            outputSeconds += std::chrono::duration<double>(
+                std::chrono::steady_clock::now() - outputStart).count();
             ++nInteractionSamples_;
             log_<< "Time = " << control_.name(time_) << "\n"
                 << "Step = " << timeIndex_ << "  deltaT = "
                 << str(deltaT_, 4) << "  particles = " << particles_.size()
                 << "\n" << executionTimeLine() << "\n" << std::endl;
         }
+        else
+        {
+            outputSeconds += std::chrono::duration<double>(
+                std::chrono::steady_clock::now() - outputStart).count();
+        }
     }
 
-    const double seconds = std::chrono::duration<double>(
+    // The rates below are of the steps alone: writing time directories
+    // and counting pairs for this summary are left out.
+    const double loopSeconds = std::chrono::duration<double>(
         std::chrono::steady_clock::now() - wallStart).count();
+    const double seconds = std::max(1e-9, loopSeconds - outputSeconds);
     const double meanPairs = interactionSamples_/nInteractionSamples_;
     log_<< "Run summary: " << stepsRun_ << " steps of "
         << particles_.size() << " particles in " << str(seconds, 4)
-        << " s wall clock\n"
+        << " s wall clock (plus " << str(outputSeconds, 4)
+        << " s writing and logging)\n"
         << "    " << str(particleSteps_/seconds/1e6, 4)
         << " M particle-steps/s, "
         << str(2*meanPairs*stepsRun_/seconds/1e9, 4)
