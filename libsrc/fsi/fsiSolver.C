@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <future>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -588,8 +589,9 @@ double fsiSolver::countInteractionsGpu() { return 0; }
 #endif
 
 
-void fsiSolver::write()
+void fsiSolver::write(const bool inBackground)
 {
+    finishWrite();
     const label n = particles_.size();
     std::vector<label> counts(bodies_.size(), 0);
     for (label i = 0; i < n; ++i) ++counts[particles_.body[i]];
@@ -650,10 +652,30 @@ void fsiSolver::write()
 
     const timeState state{time_, control_.name(time_), timeIndex_, deltaT_,
                           deltaT0_, beginTime_, {{"c0", model_.c0}}};
-    writeTimeDirectory(caseDir_, state, out,
-        writeFormatFromName(control_.writeFormatName),
-        control_.writePrecision);
+    const writeFormat format = writeFormatFromName(control_.writeFormatName);
+    const int precision = control_.writePrecision;
     log_<< "Writing time " << state.name << std::endl;
+    if (!inBackground)
+    {
+        writeTimeDirectory(caseDir_, state, out, format, precision);
+        return;
+    }
+    // out is a copy: the steps go on while a host thread writes it (still
+    // atomically, so a run stopped meanwhile keeps the previous time).
+    pendingWrite_ = std::async(std::launch::async,
+        [this, state, format, precision, out = std::move(out)]()
+        {
+            writeTimeDirectory(caseDir_, state, out, format, precision);
+        });
+}
+
+
+void fsiSolver::finishWrite()
+{
+    if (pendingWrite_.valid())
+    {
+        pendingWrite_.get();   // rethrows a failed write's error
+    }
 }
 
 
@@ -703,8 +725,10 @@ void fsiSolver::run()
         const auto outputStart = std::chrono::steady_clock::now();
         if (schedule_->due(time_, timeIndex_) || atEnd)
         {
+            // On the GPU the host is free while the steps run: the write
+            // goes on beside them.
             if (gpu_) gpuToHost();
-            write();
+            write(bool(gpu_));
             schedule_->written(time_, control_.name(time_), caseDir_,
                                startTimeName_);
         }
@@ -731,6 +755,10 @@ void fsiSolver::run()
     const double loopSeconds = std::chrono::duration<double>(
         std::chrono::steady_clock::now() - wallStart).count();
     const double seconds = std::max(1e-9, loopSeconds - outputSeconds);
+    const auto lastWrite = std::chrono::steady_clock::now();
+    finishWrite();
+    outputSeconds += std::chrono::duration<double>(
+        std::chrono::steady_clock::now() - lastWrite).count();
     const double meanPairs = interactionSamples_/nInteractionSamples_;
     log_<< "Run summary: " << stepsRun_ << " steps of "
         << particles_.size() << " particles in " << str(seconds, 4)
