@@ -17,36 +17,6 @@ namespace sphvcpm
 namespace
 {
 
-// The fields that live across steps, into the sorted order (the first n
-// particles of order); the step fields are the targets, as on the host.
-struct reorderOp
-{
-    const label* order;
-    const vec3* position;   vec3* newPosition;
-    const vec3* velocity;   vec3* newVelocity;
-    const scalar* rho;      scalar* newRho;
-    const scalar* p;        scalar* newP;
-    const scalar* mass;     scalar* newMass;
-    const std::uint8_t* kind;   std::uint8_t* newKind;
-    const std::uint8_t* body;   std::uint8_t* newBody;
-    const label* id;        label* newId;
-    const label* link;      label* newLink;    // nullptr without solids
-
-    SPHVCPM_HD void operator()(const label k) const
-    {
-        const label old = order[k];
-        newPosition[k] = position[old];
-        newVelocity[k] = velocity[old];
-        newRho[k] = rho[old];
-        newP[k] = p[old];
-        newMass[k] = mass[old];
-        newKind[k] = kind[old];
-        newBody[k] = body[old];
-        newId[k] = id[old];
-        if (link) newLink[k] = link[old];
-    }
-};
-
 // Grows a buffer to at least n elements (contents not kept).
 template<class T>
 T* atLeast(deviceBuffer<T>& buffer, const label n)

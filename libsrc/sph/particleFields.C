@@ -52,21 +52,16 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
     std::vector<std::uint8_t> newKind(n), newBody(n);
     std::vector<label> newId(n);
     std::vector<label> newLink(link.empty() ? 0 : n);
-    const bool withLink = !link.empty();
-    const label* o = order.data();
-    parallelFor(openmpExec{}, n, [&](const label k)
-    {
-        const label old = o[k];
-        velocity0[k] = position[old];
-        acceleration[k] = velocity[old];
-        rho0[k] = rho[old];
-        drho[k] = p[old];
-        invRho[k] = mass[old];
-        newKind[k] = kind[old];
-        newBody[k] = body[old];
-        newId[k] = id[old];
-        if (withLink) newLink[k] = link[old];
-    });
+    parallelFor(openmpExec{}, n, reorderOp{order.data(),
+        position.data(), velocity0.data(),
+        velocity.data(), acceleration.data(),
+        rho.data(), rho0.data(),
+        p.data(), drho.data(),
+        mass.data(), invRho.data(),
+        kind.data(), newKind.data(),
+        body.data(), newBody.data(),
+        id.data(), newId.data(),
+        link.empty() ? nullptr : link.data(), newLink.data()});
     position.swap(velocity0);
     velocity.swap(acceleration);
     rho.swap(rho0);
