@@ -92,7 +92,7 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
     {
         d.fatalAt("logInterval", "logInterval must be >= 1 (steps)");
     }
-    tc.device = d.getWordOrDefault("device", {"cpu", "cuda"}, "cpu");
+    tc.device = d.getWordOrDefault("device", {"cpu", "cuda", "auto"}, "cpu");
     return tc;
 }
 

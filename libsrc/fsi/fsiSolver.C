@@ -36,7 +36,16 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     log_(log),
     control_(timeControl::read(caseDir))
 {
-    const std::string chosen = device.empty() ? control_.device : device;
+    std::string chosen = device.empty() ? control_.device : device;
+    if (chosen == "auto")
+    {
+        // The GPU when there is one, the CPU otherwise (asked for: no error).
+        chosen = gpuAvailable() ? "cuda" : "cpu";
+        log_<< "device auto: running on the " << (chosen == "cuda"
+            ? "GPU" : "CPU (" + (cudaBackendBuilt()
+                ? cudaDeviceInfo().reason : std::string("no CUDA backend"))
+              + ")") << "\n" << std::endl;
+    }
     if (chosen == "cuda" && !gpuAvailable())
     {
         const std::string why = cudaBackendBuilt()
@@ -44,7 +53,8 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
           : "this build has no CUDA backend (nvcc was not found)";
         const std::string what = "device cuda was asked for, but no GPU can"
             " be used: " + why + ". Run on the CPU with -device cpu (or"
-            " device cpu; in system/controlDict)";
+            " device cpu; in system/controlDict), or let -device auto fall"
+            " back to it";
         if (device.empty())
         {
             fatalIOError((caseDir/"system/controlDict").string(),
@@ -54,7 +64,8 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     }
     else if (chosen != "cpu" && chosen != "cuda")
     {
-        fatalError("device " + chosen + ": expected cpu or cuda (from -device,"
+        fatalError("device " + chosen + ": expected cpu, cuda or auto (from"
+            " -device,"
             " $SPHVCPM_DEVICE or the device entry of system/controlDict)");
     }
     readStartTime();

@@ -29,7 +29,7 @@ fresh
 (cd "$scratch/c" && SPHVCPM_DEVICE=gpu timeout 60 sphVcpmFsi > log.solver 2>&1)
 check "SPHVCPM_DEVICE=gpu: exit status 1" [ $? -eq 1 ]
 expectIn "SPHVCPM_DEVICE=gpu: says what is expected" "$scratch/c/log.solver" \
-    "device gpu: expected cpu or cuda .*SPHVCPM_DEVICE"
+    "device gpu: expected cpu, cuda or auto .*SPHVCPM_DEVICE"
 if ! (cd "$scratch/c" && timeout 60 sphVcpmFsi -device cuda > log.solver 2>&1) \
    && grep -q "no GPU can be used" "$scratch/c/log.solver"; then
     pass "-device cuda without a GPU stops and says why"
@@ -39,6 +39,10 @@ elif grep -q '^End' "$scratch/c/log.solver"; then
 else
     fail "-device cuda neither ran nor said why"; tail -5 "$scratch/c/log.solver"
 fi
+# auto: the GPU when there is one, else the CPU, and the run goes on.
+(cd "$scratch/c" && rm -rf 0.* && timeout 60 sphVcpmFsi -device auto > log.solver 2>&1)
+check "-device auto runs (on a GPU or falling back to the CPU)" grep -q '^End' "$scratch/c/log.solver"
+expectIn "-device auto says where it runs" "$scratch/c/log.solver" "device auto: running on the (GPU|CPU)"
 
 fresh; rm "$scratch/c/system/sphSchemes"
 expectFatal "missing sphSchemes" "FATAL IO ERROR" "system/sphSchemes"

@@ -31,7 +31,7 @@ int main(int argc, char* argv[])
             " and no fluid runs the VCPM solids alone (constant/"
             "solidProperties);\nit writes <time>/<solid>/{position,U,"
             "displacement,stress*,vonMises,...}.");
-        args.addOption("device", "cpu|cuda",
+        args.addOption("device", "cpu|cuda|auto",
             "where to run (overrides $SPHVCPM_DEVICE and controlDict's"
             " device)");
         if (!args.parse(argc, argv))
@@ -46,7 +46,7 @@ int main(int argc, char* argv[])
         const std::string device = args.optionOrDefault("device",
             fromEnvironment && *fromEnvironment
           ? std::string(fromEnvironment) : control.device);
-        args.printBanner(device == "cuda" && gpuAvailable()
+        args.printBanner((device == "cuda" || device == "auto") && gpuAvailable()
             ? cudaDeviceInfo().describe() : "cpu");
 
         // No fluid: the solids alone, without building any SPH data.
