@@ -48,6 +48,13 @@ void fluidSolidCoupling::copyPositions()
 }
 
 
+label fluidSolidCoupling::subSteps(const std::size_t b, const scalar dt) const
+{
+    return std::max<label>(1, label(std::ceil(
+        dt/solids_.bodies()[b].stableDeltaT*(1 - 1e-12))));
+}
+
+
 label fluidSolidCoupling::advance(const scalar dt,
                                   const std::vector<vec3>& force)
 {
@@ -55,18 +62,9 @@ label fluidSolidCoupling::advance(const scalar dt,
     const std::vector<vec3> start = position;
     for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
     {
-        solidBody& body = solids_.bodies()[b];
-        vcpmSolid& s = *body.solid;
-        // The sub-step: the largest that divides dt and is stable.
-        const label n = std::max<label>(1,
-            label(std::ceil(dt/body.stableDeltaT*(1 - 1e-12))));
+        vcpmSolid& s = *solids_.bodies()[b].solid;
+        const label n = subSteps(b, dt);
         const scalar subDt = dt/n;
-        if (device_)
-        {
-            advanceOnDevice(b, force.data() + offsets_[b], n, subDt);
-            most = std::max(most, n);
-            continue;
-        }
         std::copy(force.begin() + offsets_[b],
                   force.begin() + offsets_[b + 1], s.externalForce.begin());
         s.computeForces(openmpExec{});
@@ -77,36 +75,49 @@ label fluidSolidCoupling::advance(const scalar dt,
         most = std::max(most, n);
     }
     copyPositions();
-
-    // The mean velocity over this half step.
-    const label n = size();
-    for (label i = 0; i < n; ++i)
-    {
-        meanVelocity[i] = (1/dt)*(position[i] - start[i]);
-    }
+    parallelFor(openmpExec{}, size(), meanVelocityOp{position.data(),
+        start.data(), dt, meanVelocity.data()});
     return most;
+}
+
+
+void fluidSolidCoupling::keepForceAsStepStart()
+{
+    if (device_)
+    {
+        keepForceOnDevice();
+        return;
+    }
+    fluidForceAtStart = fluidForce;
 }
 
 
 label fluidSolidCoupling::advanceFirstHalf(const scalar dt)
 {
-    return advance(dt, fluidForceAtStart);
+    return device_ ? advanceOnDevice(dt, false)
+                   : advance(dt, fluidForceAtStart);
 }
 
 
 label fluidSolidCoupling::advanceSecondHalf(const scalar dt)
 {
-    const label n = size();
-    for (label i = 0; i < n; ++i)
+    if (device_)
     {
-        heldForce_[i] = scalar(2)*fluidForce[i] - fluidForceAtStart[i];
+        return advanceOnDevice(dt, true);
     }
+    parallelFor(openmpExec{}, size(), heldForceOp{fluidForce.data(),
+        fluidForceAtStart.data(), heldForce_.data()});
     return advance(dt, heldForce_);
 }
 
 
 void fluidSolidCoupling::saveStepStart()
 {
+    if (device_)
+    {
+        saveStepStartOnDevice();
+        return;
+    }
     // position already holds the solids' positions, in this order.
     startPosition_ = position;
     startVelocity_.clear();
@@ -145,9 +156,14 @@ void fluidSolidCoupling::useDevice()
 {
     fatalError("no CUDA backend in this build");
 }
-void fluidSolidCoupling::advanceOnDevice(std::size_t, const vec3*, label,
-                                         scalar)
-{}
+vec3* fluidSolidCoupling::deviceFluidForce() { return nullptr; }
+const vec3* fluidSolidCoupling::devicePosition() const { return nullptr; }
+const vec3* fluidSolidCoupling::deviceMeanVelocity() const { return nullptr; }
+bool fluidSolidCoupling::nonFiniteOnDevice() const { return false; }
+void fluidSolidCoupling::toHost() {}
+label fluidSolidCoupling::advanceOnDevice(scalar, bool) { return 0; }
+void fluidSolidCoupling::keepForceOnDevice() {}
+void fluidSolidCoupling::saveStepStartOnDevice() {}
 #endif
 
 } // End namespace sphvcpm

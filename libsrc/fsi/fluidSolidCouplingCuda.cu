@@ -1,13 +1,15 @@
 /*---------------------------------------------------------------------------*\
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
-// The solids' sub-cycle on the GPU: each body's bond list, clamps and
-// per-particle work arrays live in device memory; a half step uploads the
-// state and the held fluid force, runs the sub-steps with the functors of
-// vcpmInteractions.H (vcpmStep, as on the host) and brings the state back,
-// so that the coupling's host arrays stay the reference (restart, writes,
-// undo after a blow-up).
+// The coupling on the GPU: the solids' state (positions, velocities,
+// forces, clamps, stretch sums) in flat device arrays in the coupling's
+// solid order, each body's bond list beside them, and the coupling's own
+// arrays (fluid forces, the mean velocity, the step-start copies). The
+// sub-cycle runs vcpmStep (vcpmInteractions.H) on views into the flat
+// arrays, so nothing crosses the bus during a step; toHost() brings the
+// state back for writes, function objects and diagnoses.
 #include "fluidSolidCoupling.H"
+#include "fluidInteractions.H"
 #include "parallelCuda.cuh"
 
 #include <vector>
@@ -19,68 +21,80 @@ namespace
 {
 
 template<class T>
-deviceBuffer<T> onDevice(const std::vector<T>& host)
+deviceBuffer<T> uploaded(const std::vector<T>& host)
 {
     deviceBuffer<T> d(label(host.size()));
     if (!host.empty()) d.copyFromHost(host);
     return d;
 }
 
+template<class T>
+void copyOnDevice(deviceBuffer<T>& to, const deviceBuffer<T>& from)
+{
+    copyDeviceToDevice(to.data(), from.data(), sizeof(T)*from.size());
+}
+
+// The smallest index of a non-finite position (n when none).
+struct firstNonFiniteOp
+{
+    const vec3* position;
+    label n;
+
+    SPHVCPM_HD label operator()(const label i) const
+    {
+        return isFinite(position[i]) ? n : i;
+    }
+};
+
 } // End anonymous namespace
 
 
-// One body in device memory.
-struct deviceSolidBody
+// One body's bond list in device memory (its indices are the body's own).
+struct deviceBonds
 {
-    vcpmSolid& host;
+    label nBonds;
     deviceBuffer<label> first, second;
-    deviceBuffer<std::uint8_t> layer, clamped;
-    deviceBuffer<scalar> length, weight, pairFactor, stretchSum;
-    deviceBuffer<vec3> position, velocity, force, externalForce,
-                       clampVelocity;
+    deviceBuffer<std::uint8_t> layer;
+    deviceBuffer<scalar> length, weight, pairFactor;
     deviceBuffer<label> start, adjacency;
 
-    explicit deviceSolidBody(vcpmSolid& s)
+    explicit deviceBonds(const bondList& b)
     :
-        host(s),
-        first(onDevice(s.bonds().first())),
-        second(onDevice(s.bonds().second())),
-        layer(onDevice(s.bonds().layer())),
-        clamped(onDevice(s.clamped)),
-        length(onDevice(s.bonds().length())),
-        weight(onDevice(s.bonds().weight())),
-        pairFactor(onDevice(s.bonds().pairFactor())),
-        stretchSum(onDevice(s.stretchSum)),
-        position(s.size()),
-        velocity(s.size()),
-        force(s.size()),
-        externalForce(s.size()),
-        clampVelocity(onDevice(s.clampVelocity))
+        nBonds(b.nBonds()),
+        first(uploaded(b.first())),
+        second(uploaded(b.second())),
+        layer(uploaded(b.layer())),
+        length(uploaded(b.length())),
+        weight(uploaded(b.weight())),
+        pairFactor(uploaded(b.pairFactor()))
     {
         // The CSR arrays are not exposed as vectors: copy through the view.
-        const bondView b = s.bonds().view();
-        const label n = s.size();
-        start = deviceBuffer<label>(b.start, n + 1);
-        adjacency = deviceBuffer<label>(b.adjacency, b.start[n]);
+        const bondView v = b.view();
+        const label n = b.nParticles();
+        start = deviceBuffer<label>(v.start, n + 1);
+        adjacency = deviceBuffer<label>(v.adjacency, v.start[n]);
     }
 
-    vcpmSolidView view()
+    bondView view() const
     {
-        const vcpmSolidView h = host.view();
-        const bondView b{h.bonds.nBonds, first.data(), second.data(),
-            layer.data(), length.data(), weight.data(), pairFactor.data(),
-            start.data(), adjacency.data()};
-        return {h.n, b, h.constants, h.mass, h.gravity, h.damping,
-                position.data(), velocity.data(), force.data(),
-                externalForce.data(), clamped.data(), clampVelocity.data(),
-                stretchSum.data()};
+        return {nBonds, first.data(), second.data(), layer.data(),
+                length.data(), weight.data(), pairFactor.data(),
+                start.data(), adjacency.data()};
     }
 };
 
 
 struct deviceSolids
 {
-    std::vector<deviceSolidBody> bodies;
+    std::vector<deviceBonds> bonds;
+    // The solids, flat in the coupling's order.
+    deviceBuffer<vec3> position, velocity, force, clampVelocity;
+    deviceBuffer<std::uint8_t> clamped;
+    deviceBuffer<scalar> stretchSum;             // 2 per particle
+    // The coupling's arrays.
+    deviceBuffer<vec3> fluidForce, fluidForceAtStart, heldForce;
+    deviceBuffer<vec3> meanVelocity, halfStart;
+    deviceBuffer<vec3> startPosition, startVelocity, startMeanVelocity;
 };
 
 
@@ -92,34 +106,146 @@ void deviceSolidsDeleter::operator()(deviceSolids* solids) const
 
 void fluidSolidCoupling::useDevice()
 {
+    // Flat host copies of what the bodies hold, in the coupling's order.
+    std::vector<vec3> velocity, clampVelocity;
+    std::vector<std::uint8_t> clamped;
+    std::vector<scalar> stretchSum;
     device_.reset(new deviceSolids);
-    device_->bodies.reserve(solids_.bodies().size());
-    for (solidBody& b : solids_.bodies())
+    for (solidBody& body : solids_.bodies())
     {
-        device_->bodies.emplace_back(*b.solid);
+        const vcpmSolid& s = *body.solid;
+        device_->bonds.emplace_back(s.bonds());
+        velocity.insert(velocity.end(), s.velocity.begin(), s.velocity.end());
+        clampVelocity.insert(clampVelocity.end(), s.clampVelocity.begin(),
+                             s.clampVelocity.end());
+        clamped.insert(clamped.end(), s.clamped.begin(), s.clamped.end());
+        stretchSum.insert(stretchSum.end(), s.stretchSum.begin(),
+                          s.stretchSum.end());
     }
+    deviceSolids& d = *device_;
+    const label n = size();
+    d.position = uploaded(position);
+    d.velocity = uploaded(velocity);
+    d.force = deviceBuffer<vec3>(n);
+    d.clampVelocity = uploaded(clampVelocity);
+    d.clamped = uploaded(clamped);
+    d.stretchSum = uploaded(stretchSum);
+    d.fluidForce = uploaded(fluidForce);
+    d.fluidForceAtStart = uploaded(fluidForceAtStart);
+    d.heldForce = deviceBuffer<vec3>(n);
+    d.meanVelocity = uploaded(meanVelocity);
+    d.halfStart = deviceBuffer<vec3>(n);
+    d.startPosition = deviceBuffer<vec3>(n);
+    d.startVelocity = deviceBuffer<vec3>(n);
+    d.startMeanVelocity = deviceBuffer<vec3>(n);
 }
 
 
-void fluidSolidCoupling::advanceOnDevice(const std::size_t b,
-                                         const vec3* fluidForceOfBody,
-                                         const label nSub, const scalar subDt)
+vec3* fluidSolidCoupling::deviceFluidForce()
 {
-    deviceSolidBody& d = device_->bodies[b];
-    vcpmSolid& s = d.host;
-    const label n = s.size();
-    d.position.copyFromHost(s.position.data(), n);
-    d.velocity.copyFromHost(s.velocity.data(), n);
-    d.externalForce.copyFromHost(fluidForceOfBody, n);
+    return device_->fluidForce.data();
+}
 
-    const vcpmSolidView v = d.view();
-    vcpmComputeForces(cudaExec{}, v);
-    for (label k = 0; k < nSub; ++k)
+
+const vec3* fluidSolidCoupling::devicePosition() const
+{
+    return device_->position.data();
+}
+
+
+const vec3* fluidSolidCoupling::deviceMeanVelocity() const
+{
+    return device_->meanVelocity.data();
+}
+
+
+void fluidSolidCoupling::keepForceOnDevice()
+{
+    copyOnDevice(device_->fluidForceAtStart, device_->fluidForce);
+}
+
+
+void fluidSolidCoupling::saveStepStartOnDevice()
+{
+    deviceSolids& d = *device_;
+    copyOnDevice(d.startPosition, d.position);
+    copyOnDevice(d.startVelocity, d.velocity);
+    copyOnDevice(d.startMeanVelocity, d.meanVelocity);
+}
+
+
+label fluidSolidCoupling::advanceOnDevice(const scalar dt,
+                                          const bool secondHalf)
+{
+    deviceSolids& d = *device_;
+    const label nAll = size();
+    if (secondHalf)
     {
-        vcpmStep(cudaExec{}, v, subDt);
+        parallelFor(cudaExec{}, nAll, heldForceOp{d.fluidForce.data(),
+            d.fluidForceAtStart.data(), d.heldForce.data()});
     }
-    d.position.copyToHost(s.position.data(), n);
-    d.velocity.copyToHost(s.velocity.data(), n);
+    const vec3* held = secondHalf ? d.heldForce.data()
+                                  : d.fluidForceAtStart.data();
+    copyOnDevice(d.halfStart, d.position);
+
+    label most = 0;
+    for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
+    {
+        const vcpmSolid& s = *solids_.bodies()[b].solid;
+        const label o = offsets_[b];
+        const vcpmSolidView v{s.size(), d.bonds[b].view(), s.constants(),
+            s.material().mass, s.gravity, s.damping, d.position.data() + o,
+            d.velocity.data() + o, d.force.data() + o, held + o,
+            d.clamped.data() + o, d.clampVelocity.data() + o,
+            d.stretchSum.data() + 2*o};
+        const label n = subSteps(b, dt);
+        const scalar subDt = dt/n;
+        vcpmComputeForces(cudaExec{}, v);
+        for (label k = 0; k < n; ++k)
+        {
+            vcpmStep(cudaExec{}, v, subDt);
+        }
+        most = std::max(most, n);
+    }
+    parallelFor(cudaExec{}, nAll, meanVelocityOp{d.position.data(),
+        d.halfStart.data(), dt, d.meanVelocity.data()});
+    return most;
+}
+
+
+bool fluidSolidCoupling::nonFiniteOnDevice() const
+{
+    const label n = size();
+    return parallelReduce(cudaExec{}, n,
+        firstNonFiniteOp{device_->position.data(), n}, n, minOp()) < n;
+}
+
+
+void fluidSolidCoupling::toHost()
+{
+    if (!device_) return;
+    deviceSolids& d = *device_;
+    const label n = size();
+    std::vector<vec3> velocity(n);
+    d.position.copyToHost(position.data(), n);
+    d.velocity.copyToHost(velocity.data(), n);
+    d.meanVelocity.copyToHost(meanVelocity.data(), n);
+    d.fluidForce.copyToHost(fluidForce.data(), n);
+    d.fluidForceAtStart.copyToHost(fluidForceAtStart.data(), n);
+    startPosition_.resize(n);
+    startVelocity_.resize(n);
+    startMeanVelocity_.resize(n);
+    d.startPosition.copyToHost(startPosition_.data(), n);
+    d.startVelocity.copyToHost(startVelocity_.data(), n);
+    d.startMeanVelocity.copyToHost(startMeanVelocity_.data(), n);
+    for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
+    {
+        vcpmSolid& s = *solids_.bodies()[b].solid;
+        std::copy(position.begin() + offsets_[b],
+                  position.begin() + offsets_[b + 1], s.position.begin());
+        std::copy(velocity.begin() + offsets_[b],
+                  velocity.begin() + offsets_[b + 1], s.velocity.begin());
+    }
 }
 
 } // End namespace sphvcpm

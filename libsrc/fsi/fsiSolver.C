@@ -550,7 +550,7 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
     if (coupling_ && undoPredictor)
     {
         coupling_->restoreStepStart();
-        hostStore().putSolids(coupling_->position, coupling_->meanVelocity);
+        hostStore().putSolids(*coupling_);
     }
     // Only a finite state is worth writing.
     bool finite = true;

@@ -5,9 +5,8 @@
 // (cudaParticleStore, the device twin of hostParticleStore) and the step of
 // fsiSolverSteps.H instantiated on it. The particles stay on the GPU
 // between steps; they come back to the host for writes, function objects
-// and diagnoses. The solids are sub-cycled on the GPU too
-// (fluidSolidCouplingCuda.cu); per half step only the solid particles'
-// force, state and mean velocity cross the bus.
+// and diagnoses. The solids are sub-cycled on the GPU too, from their
+// own device arrays (fluidSolidCouplingCuda.cu).
 #include "fsiSolverSteps.H"
 #include "parallelCuda.cuh"
 
@@ -72,8 +71,8 @@ struct cudaParticleStore
     deviceBuffer<std::uint8_t> cellHasFluidOf, nearFluidOf;
     deviceBuffer<scalar> viscTermOf;
 
-    // The solids' particles by solid index.
-    deviceBuffer<vec3> solidForceOf, solidPositionOf, solidMeanVelocityOf;
+    // The coupling, when there are solids (its arrays are on the GPU).
+    fluidSolidCoupling* coupling = nullptr;
 
     cudaParticleStore(particleFields& h, cellList& cells, const bool sps,
                       const bool shifting)
@@ -201,25 +200,24 @@ struct cudaParticleStore
     std::uint8_t* nearFluid(const label m) { return atLeast(nearFluidOf, m); }
     scalar* viscTerm(const label m) { return atLeast(viscTermOf, m); }
 
-    void solidForce(std::vector<vec3>& force)
+    // The coupling lives on the GPU too (fluidSolidCouplingCuda.cu): its
+    // force and state arrays are device memory.
+    void solidForce(fluidSolidCoupling& c)
     {
-        vec3* f = atLeast(solidForceOf, label(force.size()));
-        parallelFor(cudaExec{}, n, fluidForceOnSolidOp{view(), f});
-        solidForceOf.copyToHost(force.data(), label(force.size()));
+        parallelFor(cudaExec{}, n, fluidForceOnSolidOp{view(),
+            c.deviceFluidForce()});
     }
 
-    void putSolids(const std::vector<vec3>& x,
-                   const std::vector<vec3>& meanVelocity)
+    void putSolids(const fluidSolidCoupling& c)
     {
-        upload(solidPositionOf, x);
-        upload(solidMeanVelocityOf, meanVelocity);
         parallelFor(cudaExec{}, n, solidToParticlesOp{view(),
-            solidPositionOf.data(), solidMeanVelocityOf.data()});
+            c.devicePosition(), c.deviceMeanVelocity()});
     }
 
-    // The particles and the cell list into the host's arrays.
+    // The particles, the cell list and the solids into the host's arrays.
     void toHost()
     {
+        if (coupling) coupling->toHost();
         host.resize(n, withSps, withShifting);
         download(position, host.position, n);
         download(velocity, host.velocity, n);
@@ -260,6 +258,7 @@ void fsiSolver::startGpu()
     if (coupling_)
     {
         coupling_->useDevice();
+        gpu_->coupling = coupling_.get();
     }
 }
 
