@@ -175,11 +175,14 @@ rigidTransform rigidMotion::transform(const scalar t) const
         }
     }
 
-    const scalar rate = angle_ ? angle_->derivative(t) : 0;
-    T.angularVelocity = rate*axis_;
+    T.angularVelocity = (angle_ ? angle_->derivative(t) : 0)*axis_;
+    T.angularAcceleration =
+        (angle_ ? angle_->secondDerivative(t) : 0)*axis_;
 
     T.translation = offset(t)*direction_;
     T.linearVelocity = (offset_ ? offset_->derivative(t) : 0)*direction_;
+    T.linearAcceleration =
+        (offset_ ? offset_->secondDerivative(t) : 0)*direction_;
     return T;
 }
 

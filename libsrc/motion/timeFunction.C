@@ -387,6 +387,26 @@ void timeFunction::readTable
             + (filter.empty() ? "" : " matching select")
             + "; interpolation needs at least 2");
     }
+    setCurvatures();
+}
+
+
+void timeFunction::setCurvatures()
+{
+    // Three-point second difference, exact for a parabola on unequal
+    // intervals; the end knots take their neighbour's.
+    const std::size_t n = times_.size();
+    curvatures_.assign(n, 0);
+    for (std::size_t i = 1; i + 1 < n; ++i)
+    {
+        curvatures_[i] = 2*(slope(i) - slope(i - 1))
+                        /(times_[i + 1] - times_[i - 1]);
+    }
+    if (n > 2)
+    {
+        curvatures_[0] = curvatures_[1];
+        curvatures_[n - 1] = curvatures_[n - 2];
+    }
 }
 
 
@@ -477,6 +497,47 @@ scalar timeFunction::derivative(const scalar t) const
             }
             // Inside a segment, or an end knot: its segment's slope.
             return slope(i);
+        }
+    }
+    return 0;
+}
+
+
+scalar timeFunction::secondDerivative(const scalar t) const
+{
+    switch (type_)
+    {
+        case kind::constant:
+            return 0;
+
+        case kind::sinusoid:
+        {
+            if (t < startTime_) return 0;
+            const scalar tau = t - startTime_;
+            const scalar arg = omega_*tau + phase_;
+            scalar ramp = 1;
+            scalar rampRate = 0;
+            scalar rampCurvature = 0;
+            if (rampTime_ > 0 && tau < rampTime_)
+            {
+                const scalar k = pi/rampTime_;
+                ramp = 0.5*(1 - std::cos(k*tau));
+                rampRate = 0.5*k*std::sin(k*tau);
+                rampCurvature = 0.5*k*k*std::cos(k*tau);
+            }
+            return amplitude_
+               *(
+                    (rampCurvature - ramp*omega_*omega_)*std::sin(arg)
+                  + 2*rampRate*omega_*std::cos(arg)
+                );
+        }
+
+        case kind::table:
+        {
+            if (t < times_.front() || t > times_.back()) return 0;
+            const std::size_t i = segment(t);
+            const scalar w = (t - times_[i])/(times_[i + 1] - times_[i]);
+            return (1 - w)*curvatures_[i] + w*curvatures_[i + 1];
         }
     }
     return 0;

@@ -3,9 +3,11 @@
 \*---------------------------------------------------------------------------*/
 // Rigid motions and the motions of a case: a quarter turn, the right-hand
 // rule, distances to the axis and between points kept (a rigid motion
-// strains nothing), velocity = d(position)/dt by central differences,
-// rotation with translation, the transform's inverse, constant/motion with
-// the rolling tank's roll record, and every bad input as a FatalError.
+// strains nothing), velocity = d(position)/dt and acceleration =
+// d(velocity)/dt by central differences, a steady turn's centripetal
+// acceleration, rotation with translation, the transform's inverse,
+// constant/motion with the rolling tank's roll record, and every bad input
+// as a FatalError.
 
 #include "motionSet.H"
 #include "testDictionaryTools.H"
@@ -52,9 +54,9 @@ std::vector<vec3> randomPoints(const int n, const unsigned seed)
     return X;
 }
 
-// Velocity against the central difference of position, relative to the
-// velocity scale of the motion.
-void expectVelocityIsRate(const rigidMotion& m, const std::vector<vec3>& X,
+// Velocity and acceleration against central differences of position and
+// velocity, relative to the scale of the motion.
+void expectRatesMatch(const rigidMotion& m, const std::vector<vec3>& X,
                           const scalar t, const scalar scale)
 {
     const scalar h = 1e-6;
@@ -65,6 +67,12 @@ void expectVelocityIsRate(const rigidMotion& m, const std::vector<vec3>& X,
         const vec3 u = m.velocity(p, t);
         EXPECT_LT(mag(u - fd), 1e-8*scale)
             << "t = " << t << ", |u - fd| = " << mag(u - fd);
+
+        const vec3 fdA =
+            (m.velocity(p, t + h) - m.velocity(p, t - h))/(2*h);
+        const vec3 a = m.acceleration(p, t);
+        EXPECT_LT(mag(a - fdA), 1e-7*scale)
+            << "t = " << t << ", |a - fd| = " << mag(a - fdA);
     }
 }
 
@@ -125,7 +133,7 @@ TEST(rigidMotion, rotationIsRigidAndVelocityIsRate)
                 EXPECT_NEAR(mag(x - T.apply(X[j])), mag(X[i] - X[j]), 1e-14);
             }
         }
-        expectVelocityIsRate(m, X, t, 1);
+        expectRatesMatch(m, X, t, 1);
     }
 }
 
@@ -161,8 +169,10 @@ TEST(rigidMotion, rotationWithTranslation)
             EXPECT_NEAR(mag(x - d - T.origin), mag(p - T.origin), 1e-14);
             expectNear(T.reference(x), p, 1e-14);
             expectNear(T.velocityAtPosition(x), T.velocityAt(p), 1e-14);
+            expectNear(T.accelerationAtPosition(x), T.accelerationAt(p),
+                       1e-14);
         }
-        expectVelocityIsRate(m, X, t, 1);
+        expectRatesMatch(m, X, t, 1);
     }
 
     // Translation alone.
@@ -171,6 +181,27 @@ TEST(rigidMotion, rotationWithTranslation)
     expectNear(slide.position({1, 2, 3}, 0.5), {1, 2, 3.2}, 1e-15);
     expectNear(slide.velocity({1, 2, 3}, 0), {0, 0, 0.2*pi}, 1e-15);
     EXPECT_FALSE(slide.rotates());
+}
+
+
+// A steady turn: the acceleration is centripetal, -omega^2 times the arm.
+TEST(rigidMotion, steadyTurnIsCentripetal)
+{
+    test::scratchDir dir("rmSteady");
+    dir.write("constant/turn.dat", "0 0\n10 20\n");
+    const auto file = dir.write("f.dict",
+        "f { type table; file \"constant/turn.dat\"; units radians; }\n");
+    const rigidMotion m({1, 0, 0}, {0, 0, 1}, timeFunction::read
+    (
+        dictionary::fromFile(file).subDict("f"), dir.path(), true
+    ));
+    for (const scalar t : {0.3, 2.0, 7.1})
+    {
+        const vec3 arm = m.position({3, 0, 0}, t) - vec3{1, 0, 0};
+        expectNear(m.acceleration({3, 0, 0}, t), -4.0*arm, 1e-13);
+        expectNear(m.velocity({3, 0, 0}, t), 2.0*vec3{-arm.y, arm.x, 0},
+                   1e-13);
+    }
 }
 
 

@@ -3,9 +3,10 @@
 \*---------------------------------------------------------------------------*/
 // Functions of time for prescribed motions: constants and units, tables
 // (interpolation, held ends, the derivative at knots second-order on equal
-// and unequal intervals), the shared rolling-tank record read as a CSV with
-// select, sinusoids with a ramp against finite differences, and every bad
-// input as a FatalError naming file, line and keyword.
+// and unequal intervals, the second derivative second-order on equal ones),
+// the shared rolling-tank record read as a CSV with select, sinusoids with a
+// ramp against finite differences, and every bad input as a FatalError
+// naming file, line and keyword.
 
 #include "testDictionaryTools.H"
 #include "timeFunction.H"
@@ -135,6 +136,11 @@ TEST(timeFunction, tableLinear)
         EXPECT_DOUBLE_EQ(f.derivative(3), -2);
         // Interior knot, intervals 1 and 2: (2*2 + 1*(-2))/3.
         EXPECT_DOUBLE_EQ(f.derivative(1), 2.0/3.0);
+        // Second difference 2 (-2 - 2)/3 at the knot, copied to the ends.
+        EXPECT_DOUBLE_EQ(f.secondDerivative(1), -8.0/3.0);
+        EXPECT_DOUBLE_EQ(f.secondDerivative(0), -8.0/3.0);
+        EXPECT_DOUBLE_EQ(f.secondDerivative(2.2), -8.0/3.0);
+        EXPECT_EQ(f.secondDerivative(3.1), 0);
     }
 
     // Equal intervals: the plain average of the two slopes.
@@ -197,6 +203,30 @@ TEST(timeFunction, tableSampledSinusoidSecondOrder)
         // Leading term on equal intervals: dt^2 |f'''|/6 <= 8 dt^2/6.
         EXPECT_LT(derivErr.back(), 8*0.01*0.01);
     }
+
+    // The acceleration estimate, at and between knots (equal intervals).
+    const auto d2f = [](scalar t) { return -4*std::sin(2*t); };
+    std::vector<scalar> accelErr;
+    for (const scalar dt : {0.04, 0.02, 0.01})
+    {
+        std::vector<scalar> t;
+        for (int i = 0; i*dt < 3; ++i) t.push_back(i*dt);
+        dir.write("constant/sine.dat", sampled(t, f));
+        const timeFunction table = readFunction(dir,
+            "type table;\nfile \"constant/sine.dat\";\n", false);
+        scalar err = 0;
+        for (std::size_t i = 1; i + 2 < t.size(); ++i)
+        {
+            for (const scalar tt : {t[i], 0.5*(t[i] + t[i + 1])})
+            {
+                err = std::max(err,
+                    std::abs(table.secondDerivative(tt) - d2f(tt)));
+            }
+        }
+        accelErr.push_back(err);
+    }
+    EXPECT_GT(accelErr[0]/accelErr[1], 3.5) << accelErr[0];
+    EXPECT_GT(accelErr[1]/accelErr[2], 3.5) << accelErr[1];
 }
 
 
@@ -293,6 +323,13 @@ TEST(timeFunction, sinusoidWithRamp)
         const scalar fd = (f.value(t + h) - f.value(t - h))/(2*h);
         EXPECT_NEAR(f.derivative(t), fd, 1e-8) << "t = " << t;
     }
+    // The second derivative against central differences of the first.
+    for (scalar t = t0 + 0.01; t < 3; t += 0.0537)
+    {
+        const scalar fd = (f.derivative(t + h) - f.derivative(t - h))/(2*h);
+        EXPECT_NEAR(f.secondDerivative(t), fd, 1e-7) << "t = " << t;
+    }
+    EXPECT_EQ(f.secondDerivative(0.2), 0);
     // Continuous velocity where the ramp ends.
     EXPECT_NEAR(f.derivative(t0 + ramp - 1e-9), f.derivative(t0 + ramp + 1e-9),
                 1e-7);
