@@ -235,7 +235,8 @@ TEST(timeFunction, tableSampledSinusoidSecondOrder)
 TEST(timeFunction, rollingTankRecord)
 {
     test::scratchDir dir("tfRoll");
-    const std::string csv = fullPath("motion/ROLLING_TANK_IDELSOHN_REFERENCE.csv");
+    const std::string csv =
+        fullPath("motion/ROLLING_TANK_IDELSOHN_REFERENCE.csv");
     const timeFunction deep = readFunction(dir, "type table;\nfile \"" + csv
         + "\";\ntimeColumn t_s;\nvalueColumn roll_angle_deg;\n"
           "select { case deep_oil_bottom_clamped; }\nunits degrees;\n",
