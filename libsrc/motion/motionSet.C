@@ -1,0 +1,165 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "motionSet.H"
+
+#include "dictionary.H"
+#include "error.H"
+
+#include <algorithm>
+
+namespace sphvcpm
+{
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+std::string listNames(const std::vector<std::string>& names)
+{
+    std::string s = "(";
+    for (std::size_t i = 0; i < names.size(); ++i)
+    {
+        s += (i ? " " : "") + names[i];
+    }
+    return s + ")";
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+motionSet::motionSet(const dictionary& dict, const fs::path& caseDir)
+{
+    for (const std::string& name : dict.keys())
+    {
+        if (!dict.isDict(name))
+        {
+            dict.fatalAt(name, "Keyword '" + name + "' in " + dict.name()
+                + ": every entry is a motion, a sub-dictionary"
+                  " { bodies (...); origin ...; axis ...; angle {...} }");
+        }
+        const dictionary& sub = dict.subDict(name);
+
+        // bodies first: a motion that moves no body is a mistake whatever
+        // its other keywords say.
+        const std::vector<std::string> bodies =
+            sub.get<std::vector<std::string>>("bodies");
+        const entry& bodiesEntry = sub.lookupEntry("bodies");
+        if (bodies.empty())
+        {
+            sub.fatalAt("bodies", "Keyword 'bodies' in dictionary \""
+                + sub.name() + "\": names no body");
+        }
+        for (std::size_t i = 0; i < bodies.size(); ++i)
+        {
+            const std::string& body = bodies[i];
+            if (std::find(bodies.begin(), bodies.begin() + i, body)
+             != bodies.begin() + i)
+            {
+                sub.fatalAt("bodies", "Keyword 'bodies' in dictionary \""
+                    + sub.name() + "\": body " + body + " is named twice");
+            }
+            for (const namedMotion& m : motions_)
+            {
+                if (std::find(m.bodies.begin(), m.bodies.end(), body)
+                 != m.bodies.end())
+                {
+                    sub.fatalAt("bodies", "Keyword 'bodies' in dictionary \""
+                        + sub.name() + "\": body " + body + " is already"
+                          " moved by motion " + m.name + " (" + m.file
+                        + " line " + std::to_string(m.line) + "); a body"
+                          " follows one motion");
+                }
+            }
+        }
+
+        motions_.push_back
+        (
+            namedMotion
+            {
+                name,
+                bodies,
+                rigidMotion(sub, caseDir, {"bodies"}),
+                bodiesEntry.file(),
+                bodiesEntry.line()
+            }
+        );
+    }
+}
+
+
+motionSet motionSet::read(const fs::path& caseDir)
+{
+    const fs::path file = caseDir/"constant"/"motion";
+    if (!fs::is_regular_file(file))
+    {
+        fatalError("Prescribed motions: " + file.string() + " does not"
+            " exist");
+    }
+    return motionSet(dictionary::fromFile(file), caseDir);
+}
+
+
+motionSet motionSet::readIfPresent(const fs::path& caseDir)
+{
+    if (!fs::exists(caseDir/"constant"/"motion"))
+    {
+        return motionSet();
+    }
+    return read(caseDir);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const rigidMotion* motionSet::motionOf(const std::string& bodyName) const
+{
+    for (const namedMotion& m : motions_)
+    {
+        if (std::find(m.bodies.begin(), m.bodies.end(), bodyName)
+         != m.bodies.end())
+        {
+            return &m.motion;
+        }
+    }
+    return nullptr;
+}
+
+
+std::vector<std::string> motionSet::bodies() const
+{
+    std::vector<std::string> all;
+    for (const namedMotion& m : motions_)
+    {
+        all.insert(all.end(), m.bodies.begin(), m.bodies.end());
+    }
+    return all;
+}
+
+
+void motionSet::checkBodies
+(
+    const std::vector<std::string>& allowed,
+    const std::string& what
+) const
+{
+    for (const namedMotion& m : motions_)
+    {
+        for (const std::string& body : m.bodies)
+        {
+            if (std::find(allowed.begin(), allowed.end(), body)
+             == allowed.end())
+            {
+                fatalIOError(m.file, m.line, "Keyword 'bodies' of motion "
+                    + m.name + ": " + body + " is not " + what
+                    + "; the bodies that can move are "
+                    + listNames(allowed), "bodies");
+            }
+        }
+    }
+}
+
+} // End namespace sphvcpm

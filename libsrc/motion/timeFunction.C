@@ -1,0 +1,546 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "timeFunction.H"
+
+#include "dictionary.H"
+#include "error.H"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace sphvcpm
+{
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+constexpr scalar pi = 3.14159265358979323846;
+
+std::string trim(const std::string& s)
+{
+    const auto first = s.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos) return "";
+    const auto last = s.find_last_not_of(" \t\r\n");
+    return s.substr(first, last - first + 1);
+}
+
+// A CSV header may quote its names: "t_s" reads as t_s.
+std::string unquote(const std::string& s)
+{
+    if (s.size() >= 2 && s.front() == '"' && s.back() == '"')
+    {
+        return s.substr(1, s.size() - 2);
+    }
+    return s;
+}
+
+// Cells of a line: comma-separated when it has a comma, else separated by
+// whitespace.
+std::vector<std::string> splitCells(const std::string& line)
+{
+    std::vector<std::string> cells;
+    if (line.find(',') != std::string::npos)
+    {
+        std::istringstream is(line);
+        std::string cell;
+        while (std::getline(is, cell, ','))
+        {
+            cells.push_back(unquote(trim(cell)));
+        }
+        // "a,b," ends with an empty cell that getline does not return.
+        if (line.back() == ',') cells.push_back("");
+    }
+    else
+    {
+        std::istringstream is(line);
+        std::string cell;
+        while (is >> cell) cells.push_back(unquote(cell));
+    }
+    return cells;
+}
+
+// The whole cell as a finite number (strtod alone would accept "1.5abc",
+// "nan" and "inf").
+bool parseNumber(const std::string& cell, scalar& v)
+{
+    if (cell.empty()) return false;
+    char* end = nullptr;
+    v = std::strtod(cell.c_str(), &end);
+    return end == cell.c_str() + cell.size() && std::isfinite(v);
+}
+
+std::string numberText(const scalar v)
+{
+    std::ostringstream os;
+    os.precision(12);
+    os << v;
+    return os.str();
+}
+
+std::string listCells(const std::vector<std::string>& cells)
+{
+    std::string s = "(";
+    for (std::size_t i = 0; i < cells.size(); ++i)
+    {
+        s += (i ? " " : "") + cells[i];
+    }
+    return s + ")";
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+timeFunction::timeFunction(const scalar value)
+:
+    type_(kind::constant),
+    constant_(value)
+{}
+
+
+timeFunction timeFunction::read
+(
+    const dictionary& dict,
+    const fs::path& caseDir,
+    const bool isAngle
+)
+{
+    timeFunction f;
+    const std::string type =
+        dict.getWord("type", {"constant", "sinusoid", "table"});
+
+    std::vector<std::string> valid{"type"};
+    if (type == "constant")
+    {
+        valid.insert(valid.end(), {"value"});
+    }
+    else if (type == "sinusoid")
+    {
+        valid.insert(valid.end(), {"amplitude", "period", "frequency",
+                                   "phase", "startTime", "rampTime"});
+    }
+    else
+    {
+        valid.insert(valid.end(), {"file", "timeColumn", "valueColumn",
+                                   "select"});
+    }
+
+    // Degrees against radians is the classic silent error: an angle must
+    // say which, and nothing else may.
+    if (isAngle)
+    {
+        valid.push_back("units");
+    }
+    else if (dict.found("units"))
+    {
+        dict.fatalAt("units", "Keyword 'units' in dictionary \""
+            + dict.name() + "\": only an angle takes units (degrees or"
+              " radians); this quantity is in SI units (metres for an"
+              " offset)");
+    }
+    dict.checkKeywords(valid);
+
+    scalar scale = 1;
+    if (isAngle)
+    {
+        if (!dict.found("units"))
+        {
+            dict.fatal("Dictionary \"" + dict.name() + "\" is an angle:"
+                " say units degrees; or units radians;", "units");
+        }
+        const std::string units =
+            dict.getWord("units", {"degrees", "radians"});
+        scale = units == "degrees" ? pi/180 : 1;
+    }
+
+    if (type == "constant")
+    {
+        f.type_ = kind::constant;
+        f.constant_ = scale*dict.get<scalar>("value");
+    }
+    else if (type == "sinusoid")
+    {
+        f.readSinusoid(dict, scale);
+    }
+    else
+    {
+        f.readTable(dict, caseDir, scale);
+    }
+    return f;
+}
+
+
+void timeFunction::readSinusoid(const dictionary& dict, const scalar scale)
+{
+    type_ = kind::sinusoid;
+
+    amplitude_ = scale*dict.get<scalar>("amplitude");
+
+    const bool hasPeriod = dict.found("period");
+    const bool hasFrequency = dict.found("frequency");
+    if (hasPeriod && hasFrequency)
+    {
+        dict.fatalAt("frequency", "Keyword 'frequency' in dictionary \""
+            + dict.name() + "\": give period or frequency, not both");
+    }
+    if (!hasPeriod && !hasFrequency)
+    {
+        dict.fatal("Dictionary \"" + dict.name() + "\": a sinusoid needs"
+            " period (s) or frequency (Hz)", "period");
+    }
+    const std::string key = hasPeriod ? "period" : "frequency";
+    const scalar given = dict.get<scalar>(key);
+    if (!(given > 0))
+    {
+        dict.fatalAt(key, "Keyword '" + key + "' in dictionary \""
+            + dict.name() + "\": must be positive, found "
+            + numberText(given));
+    }
+    omega_ = hasPeriod ? 2*pi/given : 2*pi*given;
+
+    phase_ = dict.getOrDefault<scalar>("phase", 0);
+    startTime_ = dict.getOrDefault<scalar>("startTime", 0);
+    rampTime_ = dict.getOrDefault<scalar>("rampTime", 0);
+    if (!(rampTime_ >= 0))
+    {
+        dict.fatalAt("rampTime", "Keyword 'rampTime' in dictionary \""
+            + dict.name() + "\": the ramp duration must be >= 0 (0: no"
+              " ramp), found " + numberText(rampTime_));
+    }
+}
+
+
+void timeFunction::readTable
+(
+    const dictionary& dict,
+    const fs::path& caseDir,
+    const scalar scale
+)
+{
+    type_ = kind::table;
+
+    const fs::path given = dict.get<std::string>("file");
+    const fs::path file = given.is_absolute() ? given : caseDir/given;
+    const std::string fileName = file.string();
+    if (!fs::is_regular_file(file))
+    {
+        dict.fatalAt("file", "Keyword 'file' in dictionary \"" + dict.name()
+            + "\": table " + fileName + " does not exist (a relative path"
+              " is taken from the case directory)");
+    }
+    std::ifstream in(file);
+    if (!in)
+    {
+        dict.fatalAt("file", "Keyword 'file': cannot read " + fileName);
+    }
+
+    // Columns by name (a CSV with a header) or the first two of each row.
+    const bool named = dict.found("timeColumn") || dict.found("valueColumn")
+                    || dict.found("select");
+    std::size_t timeCol = 0;
+    std::size_t valueCol = 1;
+    std::string timeName = "time";
+    std::string valueName = "value";
+    std::vector<std::string> header;
+    // (column, wanted text) pairs of select
+    std::vector<std::pair<std::size_t, std::string>> filter;
+
+    auto columnOf = [&](const dictionary& d, const std::string& key,
+                        const std::string& name, const int headerLine)
+    {
+        const auto it = std::find(header.begin(), header.end(), name);
+        if (it == header.end())
+        {
+            d.fatalAt(key, "Keyword '" + key + "' in dictionary \""
+                + d.name() + "\": no column '" + name + "' in the header of "
+                + fileName + " (line " + std::to_string(headerLine)
+                + "); its columns are " + listCells(header));
+        }
+        return std::size_t(it - header.begin());
+    };
+
+    std::string line;
+    int lineNo = 0;
+    int headerLine = 0;
+    scalar lastTime = 0;
+    int lastLine = 0;
+    while (std::getline(in, line))
+    {
+        ++lineNo;
+        const std::string text = trim(line);
+        if (text.empty() || text[0] == '#') continue;
+        const std::vector<std::string> cells = splitCells(text);
+
+        if (named && header.empty())
+        {
+            header = cells;
+            headerLine = lineNo;
+            timeName = dict.get<std::string>("timeColumn");
+            valueName = dict.get<std::string>("valueColumn");
+            timeCol = columnOf(dict, "timeColumn", timeName, headerLine);
+            valueCol = columnOf(dict, "valueColumn", valueName, headerLine);
+            if (const dictionary* sel = dict.findDict("select"))
+            {
+                for (const std::string& key : sel->keys())
+                {
+                    const std::vector<token>& toks =
+                        sel->lookupEntry(key).tokens();
+                    if (toks.size() != 1)
+                    {
+                        sel->fatalAt(key, "Keyword '" + key + "' in"
+                            " dictionary \"" + sel->name() + "\": expected"
+                            " one value (the text of the cell to keep)");
+                    }
+                    filter.emplace_back
+                    (
+                        columnOf(*sel, key, key, headerLine),
+                        toks[0].text
+                    );
+                }
+            }
+            else if (dict.found("select"))
+            {
+                dict.fatalAt("select", "Keyword 'select' in dictionary \""
+                    + dict.name() + "\": expected a sub-dictionary"
+                      " { column value; ... }");
+            }
+            continue;
+        }
+
+        if (named)
+        {
+            if (cells.size() != header.size())
+            {
+                fatalIOError(fileName, lineNo, "Row of " + fileName + " has "
+                    + std::to_string(cells.size()) + " cells; the header"
+                      " (line " + std::to_string(headerLine) + ") has "
+                    + std::to_string(header.size()), "file");
+            }
+            const bool keep = std::all_of(filter.begin(), filter.end(),
+                [&](const auto& f) { return cells[f.first] == f.second; });
+            if (!keep) continue;
+        }
+        else if (cells.size() != 2)
+        {
+            fatalIOError(fileName, lineNo, "Table " + fileName + ": expected"
+                " two columns, time and value, found "
+                + std::to_string(cells.size()) + " cells "
+                + listCells(cells) + " (a CSV with a header names its"
+                  " columns with timeColumn and valueColumn)", "file");
+        }
+
+        auto number = [&](const std::size_t col, const std::string& name)
+        {
+            scalar x = 0;
+            if (!parseNumber(cells[col], x))
+            {
+                fatalIOError(fileName, lineNo, "Table " + fileName
+                    + ": cell '" + cells[col] + "' of column " + name
+                    + " is not a number"
+                    + (named ? std::string() : " (a header row? name the"
+                       " columns with timeColumn and valueColumn)"), name);
+            }
+            return x;
+        };
+        const scalar t = number(timeCol, timeName);
+        const scalar v = number(valueCol, valueName);
+
+        if (!times_.empty() && !(t > lastTime))
+        {
+            fatalIOError(fileName, lineNo, "Table " + fileName + ": time "
+                + numberText(t) + " is not greater than the time "
+                + numberText(lastTime) + " of line "
+                + std::to_string(lastLine) + "; times must increase"
+                  " strictly", timeName);
+        }
+        times_.push_back(t);
+        values_.push_back(scale*v);
+        lastTime = t;
+        lastLine = lineNo;
+    }
+
+    if (named && header.empty())
+    {
+        dict.fatalAt("file", "Keyword 'file' in dictionary \"" + dict.name()
+            + "\": " + fileName + " has no header row (timeColumn and"
+              " valueColumn name columns of the header)");
+    }
+    if (times_.empty() && !filter.empty())
+    {
+        dict.fatalAt("select", "Keyword 'select' in dictionary \""
+            + dict.name() + "\": no row of " + fileName + " matches it");
+    }
+    if (times_.size() < 2)
+    {
+        dict.fatalAt("file", "Keyword 'file' in dictionary \"" + dict.name()
+            + "\": table " + fileName + " has "
+            + std::to_string(times_.size()) + " row"
+            + (times_.size() == 1 ? "" : "s")
+            + (filter.empty() ? "" : " matching select")
+            + "; interpolation needs at least 2");
+    }
+    setCurvatures();
+}
+
+
+void timeFunction::setCurvatures()
+{
+    // Three-point second difference, exact for a parabola on unequal
+    // intervals; the end knots take their neighbour's.
+    const std::size_t n = times_.size();
+    curvatures_.assign(n, 0);
+    for (std::size_t i = 1; i + 1 < n; ++i)
+    {
+        curvatures_[i] = 2*(slope(i) - slope(i - 1))
+                        /(times_[i + 1] - times_[i - 1]);
+    }
+    if (n > 2)
+    {
+        curvatures_[0] = curvatures_[1];
+        curvatures_[n - 1] = curvatures_[n - 2];
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+std::size_t timeFunction::segment(const scalar t) const
+{
+    // The last knot <= t, kept off the final knot so that [i, i+1] exists.
+    const auto it = std::upper_bound(times_.begin(), times_.end(), t);
+    const std::size_t i = it == times_.begin() ? 0 : it - times_.begin() - 1;
+    return std::min(i, times_.size() - 2);
+}
+
+
+scalar timeFunction::slope(const std::size_t i) const
+{
+    return (values_[i + 1] - values_[i])/(times_[i + 1] - times_[i]);
+}
+
+
+scalar timeFunction::value(const scalar t) const
+{
+    switch (type_)
+    {
+        case kind::constant:
+            return constant_;
+
+        case kind::sinusoid:
+        {
+            if (t < startTime_) return 0;
+            const scalar tau = t - startTime_;
+            scalar ramp = 1;
+            if (rampTime_ > 0 && tau < rampTime_)
+            {
+                ramp = 0.5*(1 - std::cos(pi*tau/rampTime_));
+            }
+            return amplitude_*ramp*std::sin(omega_*tau + phase_);
+        }
+
+        case kind::table:
+        {
+            if (t <= times_.front()) return values_.front();
+            if (t >= times_.back()) return values_.back();
+            const std::size_t i = segment(t);
+            return values_[i] + (t - times_[i])*slope(i);
+        }
+    }
+    return 0;
+}
+
+
+scalar timeFunction::derivative(const scalar t) const
+{
+    switch (type_)
+    {
+        case kind::constant:
+            return 0;
+
+        case kind::sinusoid:
+        {
+            if (t < startTime_) return 0;
+            const scalar tau = t - startTime_;
+            const scalar arg = omega_*tau + phase_;
+            scalar ramp = 1;
+            scalar rampRate = 0;
+            if (rampTime_ > 0 && tau < rampTime_)
+            {
+                const scalar s = pi*tau/rampTime_;
+                ramp = 0.5*(1 - std::cos(s));
+                rampRate = 0.5*pi/rampTime_*std::sin(s);
+            }
+            return amplitude_
+               *(rampRate*std::sin(arg) + ramp*omega_*std::cos(arg));
+        }
+
+        case kind::table:
+        {
+            // Held constant outside the table.
+            if (t < times_.front() || t > times_.back()) return 0;
+            const std::size_t i = segment(t);
+            if (t == times_[i] && i > 0)
+            {
+                // Interior knot: three-point derivative, each slope
+                // weighted by the other interval (exact for a parabola).
+                const scalar h0 = times_[i] - times_[i - 1];
+                const scalar h1 = times_[i + 1] - times_[i];
+                return (h1*slope(i - 1) + h0*slope(i))/(h0 + h1);
+            }
+            // Inside a segment, or an end knot: its segment's slope.
+            return slope(i);
+        }
+    }
+    return 0;
+}
+
+
+scalar timeFunction::secondDerivative(const scalar t) const
+{
+    switch (type_)
+    {
+        case kind::constant:
+            return 0;
+
+        case kind::sinusoid:
+        {
+            if (t < startTime_) return 0;
+            const scalar tau = t - startTime_;
+            const scalar arg = omega_*tau + phase_;
+            scalar ramp = 1;
+            scalar rampRate = 0;
+            scalar rampCurvature = 0;
+            if (rampTime_ > 0 && tau < rampTime_)
+            {
+                const scalar k = pi/rampTime_;
+                ramp = 0.5*(1 - std::cos(k*tau));
+                rampRate = 0.5*k*std::sin(k*tau);
+                rampCurvature = 0.5*k*k*std::cos(k*tau);
+            }
+            return amplitude_
+               *(
+                    (rampCurvature - ramp*omega_*omega_)*std::sin(arg)
+                  + 2*rampRate*omega_*std::cos(arg)
+                );
+        }
+
+        case kind::table:
+        {
+            if (t < times_.front() || t > times_.back()) return 0;
+            const std::size_t i = segment(t);
+            const scalar w = (t - times_[i])/(times_[i + 1] - times_[i]);
+            return (1 - w)*curvatures_[i] + w*curvatures_[i + 1];
+        }
+    }
+    return 0;
+}
+
+} // End namespace sphvcpm

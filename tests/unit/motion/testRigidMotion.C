@@ -1,0 +1,343 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// Rigid motions and the motions of a case: a quarter turn, the right-hand
+// rule, distances to the axis and between points kept (a rigid motion
+// strains nothing), velocity = d(position)/dt and acceleration =
+// d(velocity)/dt by central differences, a steady turn's centripetal
+// acceleration, rotation with translation, the transform's inverse,
+// constant/motion with the rolling tank's roll record, and every bad input
+// as a FatalError.
+
+#include "motionSet.H"
+#include "testDictionaryTools.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace sphvcpm;
+
+namespace
+{
+
+// * * * * * * * * * * * * * * * * Helpers  * * * * * * * * * * * * * * * * //
+
+constexpr scalar pi = 3.14159265358979323846;
+
+void expectNear(const vec3& a, const vec3& b, const scalar tol)
+{
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+// A smooth angle or offset, built as constant/motion would give it.
+timeFunction sinusoid(const test::scratchDir& dir, const std::string& body,
+                      const bool isAngle)
+{
+    const auto file = dir.write("f.dict", "f { type sinusoid; " + body
+        + " }\n");
+    return timeFunction::read(dictionary::fromFile(file).subDict("f"),
+                              dir.path(), isAngle);
+}
+
+std::vector<vec3> randomPoints(const int n, const unsigned seed)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    std::vector<vec3> X(n);
+    for (vec3& p : X) p = {u(gen), u(gen), u(gen)};
+    return X;
+}
+
+// Velocity and acceleration against central differences of position and
+// velocity, relative to the scale of the motion.
+void expectRatesMatch(const rigidMotion& m, const std::vector<vec3>& X,
+                          const scalar t, const scalar scale)
+{
+    const scalar h = 1e-6;
+    for (const vec3& p : X)
+    {
+        const vec3 fd =
+            (m.position(p, t + h) - m.position(p, t - h))/(2*h);
+        const vec3 u = m.velocity(p, t);
+        EXPECT_LT(mag(u - fd), 1e-8*scale)
+            << "t = " << t << ", |u - fd| = " << mag(u - fd);
+
+        const vec3 fdA =
+            (m.velocity(p, t + h) - m.velocity(p, t - h))/(2*h);
+        const vec3 a = m.acceleration(p, t);
+        EXPECT_LT(mag(a - fdA), 1e-7*scale)
+            << "t = " << t << ", |a - fd| = " << mag(a - fdA);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Rotation * * * * * * * * * * * * * * * * //
+
+TEST(rigidMotion, quarterTurnAndRightHandRule)
+{
+    const rigidMotion about0({0, 0, 0}, {0, 0, 2}, timeFunction(pi/2));
+    expectNear(about0.position({1, 0, 0}, 0), {0, 1, 0}, 1e-15);
+    expectNear(about0.position({0, 1, 0}, 0), {-1, 0, 0}, 1e-15);
+    expectNear(about0.position({0, 0, 1}, 0), {0, 0, 1}, 1e-15);
+
+    // About an axis through (1, 1, 0).
+    const rigidMotion about11({1, 1, 0}, {0, 0, 1}, timeFunction(pi/2));
+    expectNear(about11.position({2, 1, 5}, 3), {1, 2, 5}, 1e-15);
+
+    // About x: y goes to z.
+    const rigidMotion aboutX({0, 0, 0}, {1, 0, 0}, timeFunction(pi/2));
+    expectNear(aboutX.position({0, 1, 0}, 0), {0, 0, 1}, 1e-15);
+
+    // A positive rate about z moves (1, 0, 0) towards +y.
+    test::scratchDir dir("rmRate");
+    const rigidMotion turning({0, 0, 0}, {0, 0, 1},
+        sinusoid(dir, "amplitude 0.1; period 1; units radians;", true));
+    const vec3 u = turning.velocity({1, 0, 0}, 0);
+    EXPECT_NEAR(u.y, 0.1*2*pi, 1e-14);
+    EXPECT_NEAR(u.x, 0, 1e-15);
+}
+
+
+// Distances to the axis and between points are kept at every time (no
+// strain), and the velocity is the time derivative of the position.
+TEST(rigidMotion, rotationIsRigidAndVelocityIsRate)
+{
+    test::scratchDir dir("rmRigid");
+    const vec3 origin{0.3, -0.2, 0.1};
+    const vec3 axis{1, 2, -0.5};
+    const rigidMotion m(origin, axis, sinusoid(dir,
+        "amplitude 30; period 1.3; phase 0.2; startTime 0.1; rampTime 0.5;"
+        " units degrees;", true));
+
+    const std::vector<vec3> X = randomPoints(20, 7);
+    const vec3 k = axis/mag(axis);
+    for (const scalar t : {0.0, 0.23, 0.47, 0.8, 1.9})
+    {
+        const rigidTransform T = m.transform(t);
+        for (std::size_t i = 0; i < X.size(); ++i)
+        {
+            const vec3 x = T.apply(X[i]);
+            EXPECT_NEAR(mag(x - origin), mag(X[i] - origin), 1e-14);
+            // The same point of the axis, the same distance from it.
+            EXPECT_NEAR(dot(x - origin, k), dot(X[i] - origin, k), 1e-14);
+            for (std::size_t j = 0; j < i; ++j)
+            {
+                EXPECT_NEAR(mag(x - T.apply(X[j])), mag(X[i] - X[j]), 1e-14);
+            }
+        }
+        expectRatesMatch(m, X, t, 1);
+    }
+}
+
+
+// x = origin + d + R (X - origin): rotation about the axis through origin,
+// then translation; inverse and velocity of a moved point.
+TEST(rigidMotion, rotationWithTranslation)
+{
+    test::scratchDir dir("rmBoth");
+    rigidMotion quarter({1, 0, 0}, {0, 0, 1}, timeFunction(pi/2));
+    quarter.setTranslation({2, 0, 0}, timeFunction(0.5));
+    EXPECT_TRUE(quarter.rotates());
+    EXPECT_TRUE(quarter.translates());
+    expectNear(quarter.direction(), {1, 0, 0}, 0);
+    // (2,0,0) -> rotated about (1,0,0) to (1,1,0) -> shifted to (1.5,1,0).
+    expectNear(quarter.position({2, 0, 0}, 1), {1.5, 1, 0}, 1e-15);
+
+    rigidMotion m({0.3045, 0, 0}, {0, 0, 1}, sinusoid(dir,
+        "amplitude 4; period 1.214; rampTime 0.6; units degrees;", true));
+    m.setTranslation({1, 1, 0}, sinusoid(dir,
+        "amplitude 0.05; frequency 0.7; phase 1; startTime 0.2;", false));
+
+    const std::vector<vec3> X = randomPoints(20, 11);
+    for (const scalar t : {0.1, 0.35, 0.9, 2.2})
+    {
+        const rigidTransform T = m.transform(t);
+        const vec3 d = m.offset(t)*vec3{1, 1, 0}/std::sqrt(2.0);
+        expectNear(T.translation, d, 1e-15);
+        for (const vec3& p : X)
+        {
+            const vec3 x = T.apply(p);
+            // The rotation part alone keeps the distance to the axis.
+            EXPECT_NEAR(mag(x - d - T.origin), mag(p - T.origin), 1e-14);
+            expectNear(T.reference(x), p, 1e-14);
+            expectNear(T.velocityAtPosition(x), T.velocityAt(p), 1e-14);
+            expectNear(T.accelerationAtPosition(x), T.accelerationAt(p),
+                       1e-14);
+        }
+        expectRatesMatch(m, X, t, 1);
+    }
+
+    // Translation alone.
+    const rigidMotion slide({0, 0, 3}, sinusoid(dir,
+        "amplitude 0.2; period 2;", false));
+    expectNear(slide.position({1, 2, 3}, 0.5), {1, 2, 3.2}, 1e-15);
+    expectNear(slide.velocity({1, 2, 3}, 0), {0, 0, 0.2*pi}, 1e-15);
+    EXPECT_FALSE(slide.rotates());
+}
+
+
+// A steady turn: the acceleration is centripetal, -omega^2 times the arm.
+TEST(rigidMotion, steadyTurnIsCentripetal)
+{
+    test::scratchDir dir("rmSteady");
+    dir.write("constant/turn.dat", "0 0\n10 20\n");
+    const auto file = dir.write("f.dict",
+        "f { type table; file \"constant/turn.dat\"; units radians; }\n");
+    const rigidMotion m({1, 0, 0}, {0, 0, 1}, timeFunction::read
+    (
+        dictionary::fromFile(file).subDict("f"), dir.path(), true
+    ));
+    for (const scalar t : {0.3, 2.0, 7.1})
+    {
+        const vec3 arm = m.position({3, 0, 0}, t) - vec3{1, 0, 0};
+        expectNear(m.acceleration({3, 0, 0}, t), -4.0*arm, 1e-13);
+        expectNear(m.velocity({3, 0, 0}, t), 2.0*vec3{-arm.y, arm.x, 0},
+                   1e-13);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * constant/motion  * * * * * * * * * * * * //
+
+// The rolling tank: tank and plate clamp rotated about the bottom mid-point
+// by the measured roll, a gate translated by a sinusoid.
+TEST(motionSet, rollingTank)
+{
+    test::scratchDir dir("msTank");
+    const std::string csv = std::string(SPHVCPM_TEST_DATA)
+        + "/motion/ROLLING_TANK_IDELSOHN_REFERENCE.csv";
+    dir.write("constant/motion",
+        "FoamFile { format ascii; class dictionary; object motion; }\n"
+        "roll\n"
+        "{\n"
+        "    bodies (tank plate);\n"
+        "    origin (0.3045 0 0);\n"
+        "    axis (0 0 1);\n"
+        "    angle\n"
+        "    {\n"
+        "        type table; file \"" + csv + "\";\n"
+        "        timeColumn t_s; valueColumn roll_angle_deg;\n"
+        "        select { case deep_oil_bottom_clamped; }\n"
+        "        units degrees;\n"
+        "    }\n"
+        "}\n"
+        "shake\n"
+        "{\n"
+        "    bodies (gate);\n"
+        "    direction (2 0 0);\n"
+        "    offset { type sinusoid; amplitude 0.01; period 0.5;"
+        " rampTime 1; }\n"
+        "}\n");
+    const motionSet set = motionSet::read(dir.path());
+    ASSERT_EQ(set.motions().size(), 2u);
+    EXPECT_EQ(set.motions()[0].name, "roll");
+    EXPECT_EQ(set.bodies(), (std::vector<std::string>{"tank", "plate",
+                                                       "gate"}));
+    EXPECT_EQ(set.motionOf("fluid"), nullptr);
+    ASSERT_NE(set.motionOf("tank"), nullptr);
+    EXPECT_EQ(set.motionOf("tank"), set.motionOf("plate"));
+
+    // At a sample of the record the tank is turned by the listed angle.
+    const rigidMotion& roll = *set.motionOf("tank");
+    const scalar theta = -3.2209232*pi/180;   // t = 2.49 s
+    const vec3 corner{0.609, 0.3445, 0};
+    const vec3 r = corner - vec3{0.3045, 0, 0};
+    const vec3 expected = vec3{0.3045, 0, 0}
+        + vec3{std::cos(theta)*r.x - std::sin(theta)*r.y,
+               std::sin(theta)*r.x + std::cos(theta)*r.y, 0};
+    expectNear(roll.position(corner, 2.49), expected, 1e-15);
+    EXPECT_NEAR(roll.angle(2.49), theta, 1e-15);
+
+    const rigidMotion& shake = *set.motionOf("gate");
+    EXPECT_FALSE(shake.rotates());
+    EXPECT_NEAR(shake.position({0, 0, 0}, 1.125).x, 0.01, 1e-15);
+
+    // The caller says which bodies may move.
+    set.checkBodies({"tank", "plate", "gate", "fluid"}, "a wall or solid");
+    const FatalError err = test::catchFatal([&]
+    {
+        set.checkBodies({"tank", "gate"}, "a wall body or a clamped solid");
+    });
+    test::expectError(err, (dir.path()/"constant/motion").string(), 4,
+        {"plate", "a wall body or a clamped solid", "(tank gate)"});
+
+    EXPECT_TRUE(motionSet::readIfPresent(dir.path()/"nowhere").empty());
+}
+
+
+TEST(motionSet, errors)
+{
+    test::scratchDir dir("msErrors");
+    const std::string file = (dir.path()/"constant/motion").string();
+    auto expectFails = [&](const std::string& text, const int line,
+                           const std::vector<std::string>& parts)
+    {
+        SCOPED_TRACE(text);
+        dir.write("constant/motion", text);
+        const FatalError err =
+            test::catchFatal([&] { motionSet::read(dir.path()); });
+        test::expectError(err, file, line, parts);
+    };
+    const std::string angle = "angle { type constant; value 0.1;"
+        " units radians; }\n";
+
+    // Zero axis; zero direction.
+    expectFails("m\n{\nbodies (a);\norigin (0 0 0);\naxis (0 0 0);\n"
+                + angle + "}\n", 5, {"axis", "zero vector"});
+    expectFails("m\n{\nbodies (a);\ndirection (0 0 0);\n"
+                "offset { type constant; value 1; }\n}\n", 4,
+                {"direction", "zero vector"});
+    // Nothing to move by; a lone axis.
+    expectFails("m\n{\nbodies (a);\norigin (0 0 0);\n}\n", 2,
+                {"moves nothing", "angle", "offset"});
+    expectFails("m\n{\nbodies (a);\naxis (0 0 1);\ndirection (1 0 0);\n"
+                "offset { type constant; value 1; }\n}\n", 4,
+                {"axis", "no angle"});
+    // Missing origin with an angle.
+    expectFails("m\n{\nbodies (a);\naxis (0 0 1);\n" + angle + "}\n", 2,
+                {"origin"});
+    // A misspelt keyword, with the closest suggestion.
+    expectFails("m\n{\nbodies (a);\norigin (0 0 0);\naxsi (0 0 1);\n"
+                + angle + "}\n", 5,
+                {"Unknown keyword 'axsi'", "Did you mean 'axis'"});
+    // Bodies: missing, empty, twice in one motion, in two motions.
+    expectFails("m\n{\norigin (0 0 0);\naxis (0 0 1);\n" + angle + "}\n", 2,
+                {"bodies"});
+    expectFails("m\n{\nbodies ();\norigin (0 0 0);\naxis (0 0 1);\n"
+                + angle + "}\n", 3, {"names no body"});
+    expectFails("m\n{\nbodies (a b a);\norigin (0 0 0);\naxis (0 0 1);\n"
+                + angle + "}\n", 3, {"body a is named twice"});
+    expectFails("m\n{\nbodies (a b);\norigin (0 0 0);\naxis (0 0 1);\n"
+                + angle + "}\nn\n{\n\nbodies (c b);\norigin (0 0 0);\n"
+                  "axis (1 0 0);\n" + angle + "}\n", 11,
+                {"body b", "motion m", "line 3", "one motion"});
+    // An entry that is not a motion; an error inside a time function.
+    expectFails("speed 3;\n", 1, {"speed", "sub-dictionary"});
+    expectFails("m\n{\nbodies (a);\norigin (0 0 0);\naxis (0 0 1);\n"
+                "angle { type constant; value 0.1; }\n}\n", 6, {"units"});
+
+    // No constant/motion at all.
+    const FatalError missing = test::catchFatal
+    (
+        [&] { motionSet::read(dir.path()/"nowhere"); }
+    );
+    EXPECT_NE(missing.message().find("does not exist"), std::string::npos);
+
+    // Zero vectors built in code.
+    EXPECT_NE(test::catchFatal([]
+    {
+        rigidMotion({0, 0, 0}, {0, 0, 0}, timeFunction(1));
+    }).message().find("axis"), std::string::npos);
+    EXPECT_NE(test::catchFatal([]
+    {
+        rigidMotion({0, 0, 0}, timeFunction(1));
+    }).message().find("direction"), std::string::npos);
+}
