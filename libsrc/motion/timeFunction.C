@@ -421,6 +421,19 @@ std::size_t timeFunction::segment(const scalar t) const
 }
 
 
+timeFunction::rampTerms timeFunction::rampAt(const scalar tau) const
+{
+    // (1 - cos(pi s))/2 over s = tau/rampTime in [0, 1], then 1.
+    if (!(rampTime_ > 0) || tau >= rampTime_)
+    {
+        return {1, 0, 0};
+    }
+    const scalar k = pi/rampTime_;
+    return {0.5*(1 - std::cos(k*tau)), 0.5*k*std::sin(k*tau),
+            0.5*k*k*std::cos(k*tau)};
+}
+
+
 scalar timeFunction::slope(const std::size_t i) const
 {
     return (values_[i + 1] - values_[i])/(times_[i + 1] - times_[i]);
@@ -438,12 +451,7 @@ scalar timeFunction::value(const scalar t) const
         {
             if (t < startTime_) return 0;
             const scalar tau = t - startTime_;
-            scalar ramp = 1;
-            if (rampTime_ > 0 && tau < rampTime_)
-            {
-                ramp = 0.5*(1 - std::cos(pi*tau/rampTime_));
-            }
-            return amplitude_*ramp*std::sin(omega_*tau + phase_);
+            return amplitude_*rampAt(tau).value*std::sin(omega_*tau + phase_);
         }
 
         case kind::table:
@@ -470,16 +478,9 @@ scalar timeFunction::derivative(const scalar t) const
             if (t < startTime_) return 0;
             const scalar tau = t - startTime_;
             const scalar arg = omega_*tau + phase_;
-            scalar ramp = 1;
-            scalar rampRate = 0;
-            if (rampTime_ > 0 && tau < rampTime_)
-            {
-                const scalar s = pi*tau/rampTime_;
-                ramp = 0.5*(1 - std::cos(s));
-                rampRate = 0.5*pi/rampTime_*std::sin(s);
-            }
+            const rampTerms r = rampAt(tau);
             return amplitude_
-               *(rampRate*std::sin(arg) + ramp*omega_*std::cos(arg));
+               *(r.rate*std::sin(arg) + r.value*omega_*std::cos(arg));
         }
 
         case kind::table:
@@ -515,20 +516,11 @@ scalar timeFunction::secondDerivative(const scalar t) const
             if (t < startTime_) return 0;
             const scalar tau = t - startTime_;
             const scalar arg = omega_*tau + phase_;
-            scalar ramp = 1;
-            scalar rampRate = 0;
-            scalar rampCurvature = 0;
-            if (rampTime_ > 0 && tau < rampTime_)
-            {
-                const scalar k = pi/rampTime_;
-                ramp = 0.5*(1 - std::cos(k*tau));
-                rampRate = 0.5*k*std::sin(k*tau);
-                rampCurvature = 0.5*k*k*std::cos(k*tau);
-            }
+            const rampTerms r = rampAt(tau);
             return amplitude_
                *(
-                    (rampCurvature - ramp*omega_*omega_)*std::sin(arg)
-                  + 2*rampRate*omega_*std::cos(arg)
+                    (r.curvature - r.value*omega_*omega_)*std::sin(arg)
+                  + 2*r.rate*omega_*std::cos(arg)
                 );
         }
 
