@@ -46,10 +46,20 @@ inline void cudaCheck(const cudaError_t err, const char* what,
 
 constexpr int launchBlockSize = 256;
 
+// Blocks of 256 threads per SM the launch template asks the compiler to
+// fit: a cap of 65536/(256 n) registers per thread. The gathered rates
+// (the main kernel) take 128 registers uncapped, a quarter of the SM's
+// threads; with 3 blocks (80 registers, a little spilled) they hide more
+// latency: the 1.0 M-particle dam break on the H100 ran at 232, 254 and
+// 196 M particle-steps/s with 2, 3 and 4 (docs/benchmarks.md).
+#ifndef SPHVCPM_CUDA_MIN_BLOCKS
+#define SPHVCPM_CUDA_MIN_BLOCKS 3
+#endif
+
 // The launch template: one thread per index. The index is formed in 64 bits
 // so that n near 2^31 does not overflow.
 template<class F>
-__global__ void __launch_bounds__(launchBlockSize)
+__global__ void __launch_bounds__(launchBlockSize, SPHVCPM_CUDA_MIN_BLOCKS)
 launchKernel(const F f, const label n)
 {
     const long long i =
