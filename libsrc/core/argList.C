@@ -175,7 +175,11 @@ void argList::printBanner(const std::string& deviceLine) const
 #endif
 
     writeFoamFileBanner(std::cout);
-    std::cout << "Build  : " << SPHVCPM_BUILD << "\n"
+    std::cout << "Build  : " << SPHVCPM_BUILD
+#ifdef SPHVCPM_SINGLE
+              << " (single precision)"
+#endif
+              << "\n"
               << "Exec   : " << commandLine_ << "\n"
               << "Date   : " << date << "\n"
               << "Time   : " << clock << "\n"

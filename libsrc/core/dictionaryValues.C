@@ -9,6 +9,7 @@
 #include "error.H"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
 
@@ -89,7 +90,9 @@ public:
         ++i_;
     }
 
-    scalar readScalar(const std::string& what = "a number")
+    // Numbers are read as double in every build (dictionary numbers such
+    // as times must not lose digits); callers round them to scalar.
+    double readScalar(const std::string& what = "a number")
     {
         if (atEnd() || !peek().isNumber())
         {
@@ -170,7 +173,7 @@ public:
     {
         const std::size_t open = i_;
         expectPunctuation('(', " to start a vector (x y z)");
-        std::vector<scalar> c;
+        std::vector<double> c;
         while (!atEnd() && !peek().isPunctuation(')'))
         {
             c.push_back(readScalar("a number (vector component)"));
@@ -186,7 +189,7 @@ public:
                 + std::to_string(c.size()) + " components");
         }
         ++i_;
-        return {c[0], c[1], c.size() == 3 ? c[2] : 0.0};
+        return {scalar(c[0]), scalar(c[1]), scalar(c.size() == 3 ? c[2] : 0)};
     }
 
     // (a b c), N(a b c) or N{a}; element reads one element.
@@ -387,13 +390,21 @@ std::int64_t readValue(valueReader& r, std::int64_t*)
         std::numeric_limits<std::int64_t>::max(), "a 64-bit integer");
 }
 
-scalar readValue(valueReader& r, scalar*)
+double readValue(valueReader& r, double*)
 {
     dimensionSet dims;
     bool hasDims;
-    return r.readDimensioned<scalar>([&]{ return r.readScalar(); }, dims,
+    return r.readDimensioned<double>([&]{ return r.readScalar(); }, dims,
                                      hasDims);
 }
+
+#ifdef SPHVCPM_SINGLE
+// Single precision: read as double, rounded once to scalar.
+float readValue(valueReader& r, float*)
+{
+    return float(readValue(r, static_cast<double*>(nullptr)));
+}
+#endif
 
 std::string readValue(valueReader& r, std::string*) { return r.readString(); }
 
@@ -405,11 +416,19 @@ vec3 readValue(valueReader& r, vec3*)
                                    hasDims);
 }
 
-std::vector<scalar> readValue(valueReader& r, std::vector<scalar>*)
+std::vector<double> readValue(valueReader& r, std::vector<double>*)
 {
-    return r.readList<scalar>([&]{ return r.readScalar(); },
+    return r.readList<double>([&]{ return r.readScalar(); },
                               "a list of numbers");
 }
+
+#ifdef SPHVCPM_SINGLE
+std::vector<float> readValue(valueReader& r, std::vector<float>*)
+{
+    return r.readList<float>([&]{ return float(r.readScalar()); },
+                             "a list of numbers");
+}
+#endif
 
 std::vector<label> readValue(valueReader& r, std::vector<label>*)
 {
@@ -453,7 +472,7 @@ void appendTokens(std::vector<token>& out, std::int64_t v)
     out.push_back(integerToken(v));
 }
 
-void appendTokens(std::vector<token>& out, scalar v)
+void appendTokens(std::vector<token>& out, double v)
 {
     if (!std::isfinite(v))
     {
@@ -462,6 +481,19 @@ void appendTokens(std::vector<token>& out, scalar v)
     }
     out.push_back(numberToken(v));
 }
+
+#ifdef SPHVCPM_SINGLE
+// A float is written in its shortest decimal form (0.01f as 0.01, not
+// 0.009999999776), so that a double build reads back the intended number.
+void appendTokens(std::vector<token>& out, float v)
+{
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof(buf), v).ptr;
+    double d = 0;
+    std::from_chars(buf, end, d);
+    appendTokens(out, std::isfinite(v) ? d : double(v));
+}
+#endif
 
 void appendTokens(std::vector<token>& out, const std::string& v)
 {
@@ -561,8 +593,8 @@ T dictionary::getDimensioned(const std::string& key,
     }
     else
     {
-        v = r.readDimensioned<scalar>([&]{ return r.readScalar(); }, found,
-                                      hasDims);
+        v = T(r.readDimensioned<double>([&]{ return r.readScalar(); }, found,
+                                        hasDims));
     }
     r.expectEnd();
     if (hasDims && found != dims)
@@ -601,9 +633,9 @@ std::string dictionary::getWordOrDefault
 }
 
 
-scalar dictionary::getPositive(const std::string& key) const
+double dictionary::getPositive(const std::string& key) const
 {
-    const scalar v = get<scalar>(key);
+    const double v = get<double>(key);
     if (!(v > 0))
     {
         fatalAt(key, "Keyword '" + key + "': expected a positive number, "
@@ -647,18 +679,26 @@ void dictionary::set<const char*>(const std::string& key,
 SPHVCPM_DICTIONARY_TYPE(bool)
 SPHVCPM_DICTIONARY_TYPE(label)
 SPHVCPM_DICTIONARY_TYPE(std::int64_t)
-SPHVCPM_DICTIONARY_TYPE(scalar)
+SPHVCPM_DICTIONARY_TYPE(double)
 SPHVCPM_DICTIONARY_TYPE(std::string)
 SPHVCPM_DICTIONARY_TYPE(vec3)
-SPHVCPM_DICTIONARY_TYPE(std::vector<scalar>)
+SPHVCPM_DICTIONARY_TYPE(std::vector<double>)
+#ifdef SPHVCPM_SINGLE
+SPHVCPM_DICTIONARY_TYPE(float)
+SPHVCPM_DICTIONARY_TYPE(std::vector<float>)
+#endif
 SPHVCPM_DICTIONARY_TYPE(std::vector<label>)
 SPHVCPM_DICTIONARY_TYPE(std::vector<std::string>)
 SPHVCPM_DICTIONARY_TYPE(std::vector<vec3>)
 
 #undef SPHVCPM_DICTIONARY_TYPE
 
-template scalar dictionary::getDimensioned<scalar>(const std::string&,
+template double dictionary::getDimensioned<double>(const std::string&,
     const dimensionSet&) const;
+#ifdef SPHVCPM_SINGLE
+template float dictionary::getDimensioned<float>(const std::string&,
+    const dimensionSet&) const;
+#endif
 template vec3 dictionary::getDimensioned<vec3>(const std::string&,
     const dimensionSet&) const;
 

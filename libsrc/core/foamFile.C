@@ -10,7 +10,7 @@ namespace sphvcpm
 std::string archString()
 {
     return "LSB;label=" + std::to_string(8*sizeof(label))
-         + ";scalar=" + std::to_string(8*sizeof(scalar));
+         + ";scalar=" + std::to_string(8*sizeof(fileScalar));
 }
 
 void writeFoamFileBanner(std::ostream& os)

@@ -33,17 +33,17 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
     tc.startFrom = from == "startTime" ? startFromType::startTime
                  : from == "firstTime" ? startFromType::firstTime
                  : startFromType::latestTime;
-    tc.startTime = d.getOrDefault<scalar>("startTime", 0);
+    tc.startTime = d.getOrDefault<double>("startTime", 0);
     tc.stopAt = d.getWordOrDefault("stopAt",
         {"endTime", "writeNow", "noWriteNow"}, "endTime");
-    tc.endTime = d.get<scalar>("endTime");
+    tc.endTime = d.get<double>("endTime");
     if (!(tc.endTime > 0))
     {
         d.fatalAt("endTime", "endTime must be > 0");
     }
     tc.deltaT = d.getPositive("deltaT");
     tc.adjustTimeStep = d.getOrDefault<bool>("adjustTimeStep", true);
-    tc.maxCo = d.getOrDefault<scalar>("maxCo", 0.2);
+    tc.maxCo = d.getOrDefault<double>("maxCo", 0.2);
     if (!(tc.maxCo > 0 && tc.maxCo <= 1))
     {
         d.fatalAt("maxCo", "maxCo (the CFL number) must be in (0, 1];"
@@ -103,7 +103,7 @@ namespace sphvcpm
 {
 
 writeSchedule::writeSchedule(const timeControl& control,
-                             const scalar startTime)
+                             const double startTime)
 :
     control_(control),
     next_((std::floor(startTime/control.writeInterval + 1e-9) + 1)
@@ -111,15 +111,15 @@ writeSchedule::writeSchedule(const timeControl& control,
 {}
 
 
-scalar writeSchedule::limitStep(const scalar time, scalar dt)
+double writeSchedule::limitStep(const double time, double dt)
 {
     landed_ = false;
-    scalar target = control_.endTime;
+    double target = control_.endTime;
     if (control_.writeControl == writeControlType::adjustableRunTime)
     {
         target = std::min(target, next_);
     }
-    const scalar remaining = target - time;
+    const double remaining = target - time;
     if (remaining <= dt*(1 + 1e-9))
     {
         dt = remaining;
@@ -133,14 +133,14 @@ scalar writeSchedule::limitStep(const scalar time, scalar dt)
 }
 
 
-scalar writeSchedule::landingTime() const
+double writeSchedule::landingTime() const
 {
     return control_.writeControl == writeControlType::adjustableRunTime
       ? std::min(control_.endTime, next_) : control_.endTime;
 }
 
 
-bool writeSchedule::due(const scalar time, const label timeIndex) const
+bool writeSchedule::due(const double time, const label timeIndex) const
 {
     switch (control_.writeControl)
     {
@@ -154,7 +154,7 @@ bool writeSchedule::due(const scalar time, const label timeIndex) const
 }
 
 
-void writeSchedule::written(const scalar time, const std::string& name,
+void writeSchedule::written(const double time, const std::string& name,
                             const std::filesystem::path& caseDir,
                             const std::string& startTimeName)
 {

@@ -34,7 +34,7 @@ timeFormat timeFormatFromName(const std::string& name)
 }
 
 
-std::string timeName(scalar t, timeFormat format, int precision)
+std::string timeName(double t, timeFormat format, int precision)
 {
     if (!std::isfinite(t))
     {
@@ -68,7 +68,7 @@ std::string timeName(scalar t, timeFormat format, int precision)
 }
 
 
-bool parseTimeName(const std::string& name, scalar& t)
+bool parseTimeName(const std::string& name, double& t)
 {
     // Plain decimal or exponent notation only: from_chars refuses a
     // leading '+', blanks and hex floats, and the whole name must be read.
@@ -79,7 +79,7 @@ bool parseTimeName(const std::string& name, scalar& t)
     {
         return false;
     }
-    scalar value = 0;
+    double value = 0;
     const auto [ptr, ec] = std::from_chars(first, last, value);
     if (ec != std::errc() || ptr != last || !std::isfinite(value))
     {

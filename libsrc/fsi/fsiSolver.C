@@ -393,12 +393,12 @@ void fsiSolver::setHydrostaticDensity()
     const scalar gMag = mag(model_.g);
     if (gMag == 0) return;
     const vec3 up = (-1/gMag)*model_.g;
-    std::vector<scalar> top(bodies_.size(), -1e300);
+    std::vector<scalar> top(bodies_.size(), -vGreat);
     for (label i = 0; i < particles_.size(); ++i)
     {
         if (particles_.kind[i] != fluidKind) continue;
         scalar& t = top[particles_.body[i]];
-        t = std::max(t, dot(up, particles_.position[i]) + 0.5*model_.dp);
+        t = std::max(t, dot(up, particles_.position[i]) + scalar(0.5)*model_.dp);
     }
     for (label i = 0; i < particles_.size(); ++i)
     {
@@ -424,7 +424,7 @@ void fsiSolver::setDomain()
     {
         // Bounding box of all particles with a margin; against gravity the
         // box doubles, so that splashes are not lost.
-        lo = vec3{1e300, 1e300, 1e300};
+        lo = vec3{vGreat, vGreat, vGreat};
         hi = -lo;
         for (const vec3& x : particles_.position)
         {
@@ -466,10 +466,11 @@ hostParticleStore fsiSolver::hostStore()
 }
 
 
-scalar fsiSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
+double fsiSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
                                const scalar maxVel2)
 {
-    scalar dt = control_.deltaT;
+    // The step is bookkeeping (double); the limits come from the physics.
+    double dt = control_.deltaT;
     if (control_.adjustTimeStep)
     {
         // theory.md §5.8 (DualSPHysics): force and acoustic-viscous limits.
@@ -482,7 +483,7 @@ scalar fsiSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
         dt = control_.maxCo*std::min(dtForce, dtAcoustic);
         if (model_.viscosity == viscosityType::laminar && model_.nu > 0)
         {
-            dt = std::min(dt, 0.125*h*h/model_.nu);
+            dt = std::min(dt, 0.125*h*h/double(model_.nu));
         }
         dt = std::min(dt, control_.maxDeltaT);
     }

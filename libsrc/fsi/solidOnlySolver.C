@@ -75,7 +75,8 @@ solidOnlySolver::solidOnlySolver
     const vec3 g = readGravity(caseDir_, nDim_);
     solids_ = std::make_unique<solidBodySet>(caseDir_, startTimeName_, start,
                                              freshStart, g, log_);
-    stableDeltaT_ = std::min(solids_->stableDeltaT(), control_.maxDeltaT);
+    stableDeltaT_ =
+        std::min(double(solids_->stableDeltaT()), control_.maxDeltaT);
     deltaT_ = stableDeltaT_;
     log_<< "    g = (" << g.x << " " << g.y << " " << g.z << "), " << nDim_
         << "D, time = " << time_ << ", solid deltaT = " << stableDeltaT_

@@ -39,11 +39,13 @@ lattice::lattice(const vec3& origin, scalar dp, int nDimensions)
 
 vec3 lattice::node(std::int64_t i, std::int64_t j, std::int64_t k) const
 {
+    // Computed in double, rounded once in a single-precision build.
     return
     {
-        origin_.x + (scalar(i) + 0.5)*dp_,
-        origin_.y + (scalar(j) + 0.5)*dp_,
-        nDimensions_ == 2 ? scalar(0) : origin_.z + (scalar(k) + 0.5)*dp_
+        scalar(origin_.x + (scalar(i) + 0.5)*dp_),
+        scalar(origin_.y + (scalar(j) + 0.5)*dp_),
+        nDimensions_ == 2
+      ? scalar(0) : scalar(origin_.z + (scalar(k) + 0.5)*dp_)
     };
 }
 

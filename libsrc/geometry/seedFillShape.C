@@ -170,9 +170,10 @@ void seedFillShape::fill
     {
         return vec3
         {
-            origin_.x + (scalar(ijk[0]) + 0.5)*dp_,
-            origin_.y + (scalar(ijk[1]) + 0.5)*dp_,
-            nDim == 2 ? scalar(0) : origin_.z + (scalar(ijk[2]) + 0.5)*dp_
+            scalar(origin_.x + (scalar(ijk[0]) + 0.5)*dp_),
+            scalar(origin_.y + (scalar(ijk[1]) + 0.5)*dp_),
+            nDim == 2
+          ? scalar(0) : scalar(origin_.z + (scalar(ijk[2]) + 0.5)*dp_)
         };
     };
     const scalar tol = 1e-9*dp_;

@@ -68,7 +68,7 @@ segmentDistance::segmentDistance
 
     // Cells of the radius (a query reads one cell), larger when there
     // would be too many.
-    scalar h = std::max(radius_, scalar(1e-300));
+    scalar h = std::max(radius_, vSmall);
     h = std::max(h, std::sqrt(std::max(span.x, h)*std::max(span.y, h)
                               /maxCells));
     if (!std::isfinite(h) || !std::isfinite(mag(span)))
@@ -80,7 +80,7 @@ segmentDistance::segmentDistance
     {
         const scalar n = std::ceil(span[d]*invCell_);
         n_[d] = std::isfinite(n)
-            ? std::clamp<std::int64_t>(std::int64_t(std::min(n, 1e7)), 1,
+            ? std::clamp<std::int64_t>(std::int64_t(std::min(n, scalar(1e7))), 1,
                                        10000000)
             : 1;
     }
@@ -104,7 +104,7 @@ segmentDistance::segmentDistance
             {
                 for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
                 {
-                    const vec3 c = origin_ + h*vec3{i + 0.5, j + 0.5, 0};
+                    const vec3 c = origin_ + h*vec3{scalar(i + 0.5), scalar(j + 0.5), 0};
                     const scalar d2 =
                         magSqr(c - nearestOnSegment(c, a_[si], b_[si]));
                     if (!(d2 > reach*reach))    // NaN (overflow): keep it

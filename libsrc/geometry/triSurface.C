@@ -128,7 +128,7 @@ void triSurface::merge
     }
     // Cells at least mergeDistance wide, and coarse enough for 64-bit
     // cell indices; only the distance test decides a merge.
-    const scalar cell = std::max({mergeDistance, maxAbs*std::ldexp(1.0, -40),
+    const scalar cell = std::max({mergeDistance, maxAbs*std::ldexp(scalar(1), -40),
                                   std::numeric_limits<scalar>::min()});
     const scalar d2 = mergeDistance*mergeDistance;
 

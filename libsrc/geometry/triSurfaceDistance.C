@@ -91,7 +91,7 @@ triSurfaceDistance::triSurfaceDistance(const triSurface& surf, scalar radius)
 
     // Cells of the radius (a query reads one cell), larger when there
     // would be too many, and never far smaller than the triangles.
-    scalar h = std::max(radius_, scalar(1e-300));
+    scalar h = std::max(radius_, vSmall);
     const scalar volume = std::max(span.x, h)*std::max(span.y, h)
                          *std::max(span.z, h);
     h = std::max(h, std::cbrt(volume/maxCells));
@@ -104,7 +104,7 @@ triSurfaceDistance::triSurfaceDistance(const triSurface& surf, scalar radius)
     {
         const scalar n = std::ceil(span[d]*invCell_);
         n_[d] = std::isfinite(n)
-            ? std::clamp<std::int64_t>(std::int64_t(std::min(n, 1e6)), 1,
+            ? std::clamp<std::int64_t>(std::int64_t(std::min(n, scalar(1e6))), 1,
                                        1000000)
             : 1;
     }
@@ -131,7 +131,7 @@ triSurfaceDistance::triSurfaceDistance(const triSurface& surf, scalar radius)
     const auto near = [&](const triSurface::face& f, std::int64_t i,
                           std::int64_t j, std::int64_t k)
     {
-        const vec3 c = origin_ + h*vec3{i + 0.5, j + 0.5, k + 0.5};
+        const vec3 c = origin_ + h*vec3{scalar(i + 0.5), scalar(j + 0.5), scalar(k + 0.5)};
         const scalar d2 = magSqr(c - nearestOnTriangle(c, points_[f[0]],
                                                points_[f[1]], points_[f[2]]));
         return !(d2 > reach*reach);     // NaN (overflow): keep it

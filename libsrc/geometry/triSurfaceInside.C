@@ -110,7 +110,7 @@ void triSurfaceInside::build(const triSurface& surf, int axis)
     // bins lies outside every triangle's projection.
     const scalar eu0 = bounds_.max[g.u] - bounds_.min[g.u];
     const scalar ev0 = bounds_.max[g.v] - bounds_.min[g.v];
-    const scalar pad = 1e-6*std::max(std::hypot(eu0, ev0), scalar(1e-300));
+    const scalar pad = 1e-6*std::max(std::hypot(eu0, ev0), vSmall);
     g.u0 = bounds_.min[g.u] - pad;
     g.v0 = bounds_.min[g.v] - pad;
     const scalar eu = eu0 + 2*pad;

@@ -22,7 +22,7 @@ const char* const syntaxHelp =
     "separated list of those, e.g. -time '0,0.2:0.4'";
 
 // The whole of s as a finite number; false otherwise.
-bool readNumber(const std::string& s, scalar& value)
+bool readNumber(const std::string& s, double& value)
 {
     const char* first = s.data();
     const char* last = s.data() + s.size();
@@ -148,8 +148,8 @@ void timeSelection::parse(const std::string& text)
             }
             const std::string lo = item.substr(0, colon);
             const std::string hi = item.substr(colon + 1);
-            r.lower = -std::numeric_limits<scalar>::infinity();
-            r.upper = std::numeric_limits<scalar>::infinity();
+            r.lower = -std::numeric_limits<double>::infinity();
+            r.upper = std::numeric_limits<double>::infinity();
             r.exact = false;
             if (!lo.empty() && !readNumber(lo, r.lower))
             {
@@ -220,7 +220,7 @@ std::vector<timeInstant> timeSelection::select(
         {
             for (std::size_t i = 0; i < candidates.size(); ++i)
             {
-                const scalar v = candidates[i].value;
+                const double v = candidates[i].value;
                 if (r.lower <= v && v <= r.upper)
                 {
                     selected[i] = true;

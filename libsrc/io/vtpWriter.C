@@ -25,11 +25,15 @@ namespace sphvcpm
 // order and the field layouts must be what the XML header announces.
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
               "vtpWriter writes host memory as LittleEndian");
-static_assert(sizeof(scalar) == 8, "scalar fields are written as Float64");
 static_assert(sizeof(label) == 4, "label fields are written as Int32");
 static_assert(sizeof(vec3) == 3*sizeof(scalar)
            && std::is_standard_layout<vec3>::value,
-              "vector fields are written as 3 packed Float64");
+              "vector fields are written as 3 packed scalars");
+
+// Fields and points as the build holds them: Float32 in a single-precision
+// build (VTK files are for viewing, never read back).
+static constexpr const char* scalarType =
+    sizeof(scalar) == 8 ? "Float64" : "Float32";
 
 namespace
 {
@@ -138,7 +142,7 @@ void writeDataArrayTag(std::ostream& os, const dataArray& a,
 } // End anonymous namespace
 
 
-std::string exactNumber(scalar x)
+std::string exactNumber(double x)
 {
     char buf[64];
     const auto result = std::to_chars(buf, buf + sizeof(buf), x);
@@ -147,7 +151,7 @@ std::string exactNumber(scalar x)
 
 
 void writeVtp(const std::filesystem::path& file, const particleBody& body,
-              const std::vector<std::string>& fields, scalar time)
+              const std::vector<std::string>& fields, double time)
 {
     const std::uint64_t n = std::uint64_t(body.size());
     const bool planar = body.nDimensions() == 2;
@@ -177,11 +181,11 @@ void writeVtp(const std::filesystem::path& file, const particleBody& body,
         switch (body.kindOf(name))
         {
             case fieldKind::scalarField:
-                pointData.push_back(directArray(name, "Float64", 1,
+                pointData.push_back(directArray(name, scalarType, 1,
                     body.scalarField(name)));
                 break;
             case fieldKind::vectorField:
-                pointData.push_back(directArray(name, "Float64", 3,
+                pointData.push_back(directArray(name, scalarType, 3,
                     body.vectorField(name)));
                 break;
             case fieldKind::labelField:
@@ -192,7 +196,7 @@ void writeVtp(const std::filesystem::path& file, const particleBody& body,
     }
 
     const std::vector<vec3>& position = body.position();
-    dataArray points = directArray("Points", "Float64", 3, position);
+    dataArray points = directArray("Points", scalarType, 3, position);
     if (planar)
     {
         // A 2D body lies in the x-y plane whatever z holds in memory.
@@ -241,7 +245,7 @@ void writeVtp(const std::filesystem::path& file, const particleBody& body,
     dataArray offsets{"offsets", "Int64", 1, n*sizeof(std::int64_t),
         sequence(1)};
 
-    std::vector<scalar> timeValue;
+    std::vector<double> timeValue;
     if (!std::isnan(time))
     {
         timeValue.push_back(time);

@@ -30,6 +30,8 @@
 #include <cstring>
 #include <limits>
 #include <sstream>
+#include <type_traits>
+#include <vector>
 
 #if __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
 #error "binary particle fields are written little-endian (LSB) only"
@@ -70,12 +72,13 @@ const char* listType(fieldKind kind)
 }
 
 
+// Bytes of one value in a binary file (64-bit scalars in every build).
 std::size_t valueBytes(fieldKind kind)
 {
     switch (kind)
     {
-        case fieldKind::scalarField: return sizeof(scalar);
-        case fieldKind::vectorField: return sizeof(vec3);
+        case fieldKind::scalarField: return sizeof(fileScalar);
+        case fieldKind::vectorField: return 3*sizeof(fileScalar);
         case fieldKind::labelField: return sizeof(label);
     }
     return 0;
@@ -104,7 +107,7 @@ inline bool endsValue(char c)
 }
 
 
-inline char* formatScalar(char* p, scalar v, int precision)
+inline char* formatScalar(char* p, double v, int precision)
 {
     // The longest %g form: sign, precision digits, point, "e-308".
     return std::to_chars(p, p + precision + 12, v,
@@ -377,10 +380,11 @@ void checkArch(const dictionary& header, const std::string& file)
                 "build " + std::to_string(8*sizeof(label)) + "-bit";
         }
         else if (part.rfind("scalar=", 0) == 0
-              && part != "scalar=" + std::to_string(8*sizeof(scalar)))
+              && part != "scalar=" + std::to_string(8*sizeof(fileScalar)))
         {
+            // Also in a single-precision build: its files are 64-bit too.
             why += "; the file has " + part.substr(7) + "-bit scalars, this "
-                "build " + std::to_string(8*sizeof(scalar)) + "-bit";
+                "build " + std::to_string(8*sizeof(fileScalar)) + "-bit";
         }
     }
     if (why.empty())
@@ -445,12 +449,15 @@ struct asciiScalar
         {
             ++p;
         }
-        const auto [q, ec] = std::from_chars(p, end, v);
+        // Read as double in every build, then rounded once to scalar.
+        double d = 0;
+        const auto [q, ec] = std::from_chars(p, end, d);
         if (ec == std::errc::result_out_of_range)
         {
             err.why = "is out of the range of a double";
             return nullptr;
         }
+        v = scalar(d);
         if (ec != std::errc() || (q < end && !endsValue(*q)))
         {
             err.why = "is not a number";
@@ -684,7 +691,25 @@ void readBinaryValues(fieldParser& parser, void* dest, label n,
     parser.markBinary(parser.pos());
     if (bytes)
     {
-        std::memcpy(dest, parser.data() + parser.pos(), bytes);
+        if (kind == fieldKind::labelField
+         || std::is_same_v<scalar, fileScalar>)
+        {
+            std::memcpy(dest, parser.data() + parser.pos(), bytes);
+        }
+        else
+        {
+            // Single precision: the file's doubles rounded to scalar (the
+            // file's bytes need not be aligned for a double).
+            const char* src = parser.data() + parser.pos();
+            scalar* d = static_cast<scalar*>(dest);
+            const std::size_t nValues = bytes/sizeof(fileScalar);
+            for (std::size_t i = 0; i < nValues; ++i)
+            {
+                fileScalar x;
+                std::memcpy(&x, src + i*sizeof(fileScalar), sizeof(x));
+                d[i] = scalar(x);
+            }
+        }
     }
     parser.setPos(parser.pos() + bytes);
     if (parser.atEnd() || parser.peek() != ')')
@@ -880,8 +905,32 @@ void writeField(const std::filesystem::path& file, const particleBody& body,
     {
         os << n << '(';
         out.write(os.str());
-        out.write(static_cast<const char*>(raw),
-                  std::size_t(n)*valueBytes(kind));
+        if (kind == fieldKind::labelField
+         || std::is_same_v<scalar, fileScalar>)
+        {
+            out.write(static_cast<const char*>(raw),
+                      std::size_t(n)*valueBytes(kind));
+        }
+        else
+        {
+            // Single precision: widened to the file's 64-bit scalars, in
+            // chunks to bound the extra memory.
+            const scalar* v = static_cast<const scalar*>(raw);
+            const std::size_t nValues =
+                std::size_t(n)*(kind == fieldKind::vectorField ? 3 : 1);
+            constexpr std::size_t chunk = 1 << 16;
+            std::vector<fileScalar> wide(std::min(nValues, chunk));
+            for (std::size_t i0 = 0; i0 < nValues; i0 += chunk)
+            {
+                const std::size_t m = std::min(chunk, nValues - i0);
+                for (std::size_t i = 0; i < m; ++i)
+                {
+                    wide[i] = fileScalar(v[i0 + i]);
+                }
+                out.write(reinterpret_cast<const char*>(wide.data()),
+                          m*sizeof(fileScalar));
+            }
+        }
         out.write(");");
     }
     else

@@ -46,7 +46,7 @@ bool isFieldFileName(const std::string& name)
 
 void checkTimeName(const std::string& name)
 {
-    scalar t = 0;
+    double t = 0;
     if (!parseTimeName(name, t))
     {
         fatalError("Invalid time name '" + name
@@ -83,15 +83,15 @@ void writeTimeDict(const fs::path& file, const timeState& state,
 {
     // The entries of OpenFOAM's TimeIO.C writeTimeDict.
     dictionary dict;
-    dict.set<scalar>("beginTime", state.beginTime);
-    dict.set<scalar>("value", state.value);
+    dict.set<double>("beginTime", state.beginTime);
+    dict.set<double>("value", state.value);
     dict.set<std::string>("name", state.name);
     dict.set<label>("index", state.index);
-    dict.set<scalar>("deltaT", state.deltaT);
-    dict.set<scalar>("deltaT0", state.deltaT0);
+    dict.set<double>("deltaT", state.deltaT);
+    dict.set<double>("deltaT0", state.deltaT0);
     for (const auto& [key, value] : state.solverValues)
     {
-        dict.set<scalar>(key, value);
+        dict.set<double>(key, value);
     }
     dict.writeFile(file, location);
     particleFiles::syncPath(file);
@@ -229,7 +229,7 @@ std::vector<timeInstant> findTimes(const fs::path& caseDir)
     for (const auto& e : fs::directory_iterator(caseDir))
     {
         const std::string name = e.path().filename().string();
-        scalar t = 0;
+        double t = 0;
         // Hidden: a write in progress or one that was interrupted.
         if (name[0] != '.' && e.is_directory() && parseTimeName(name, t))
         {
@@ -397,20 +397,20 @@ timeState readTimeState(const fs::path& caseDir, const std::string& timeName)
     }
 
     const dictionary dict = dictionary::fromFile(file);
-    state.value = dict.get<scalar>("value");
+    state.value = dict.get<double>("value");
     state.index = dict.get<label>("index");
-    state.deltaT = dict.get<scalar>("deltaT");
-    state.deltaT0 = dict.getOrDefault<scalar>("deltaT0", state.deltaT);
-    state.beginTime = dict.getOrDefault<scalar>("beginTime", 0);
+    state.deltaT = dict.get<double>("deltaT");
+    state.deltaT0 = dict.getOrDefault<double>("deltaT0", state.deltaT);
+    state.beginTime = dict.getOrDefault<double>("beginTime", 0);
     for (const std::string& key : dict.keys())
     {
         if (key != "value" && key != "name" && key != "index"
          && key != "deltaT" && key != "deltaT0" && key != "beginTime")
         {
-            state.solverValues.emplace_back(key, dict.get<scalar>(key));
+            state.solverValues.emplace_back(key, dict.get<double>(key));
         }
     }
-    const auto check = [&dict](const char* key, scalar v, bool nonNegative)
+    const auto check = [&dict](const char* key, double v, bool nonNegative)
     {
         if (!std::isfinite(v) || (nonNegative && v < 0))
         {

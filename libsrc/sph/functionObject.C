@@ -75,7 +75,7 @@ functionObject::functionObject(std::string name, const dictionary& dict,
 
 // * * * * * * * * * * * * * * * Member functions * * * * * * * * * * * * * //
 
-bool functionObject::due(const scalar time, const label timeIndex) const
+bool functionObject::due(const double time, const label timeIndex) const
 {
     if (std::isnan(nextSampleTime_))
     {

@@ -145,9 +145,21 @@ scalar extentAlong(const cellGrid& g, const vec3& b, const vec3& u)
     return t > 0 ? t : 0;
 }
 
+// Sums over all particles accumulate in double in every build (a float
+// sum of a million terms keeps only a few digits).
+using sumVec = Vec3<double>;
+
+sumVec toSum(const vec3& a)
+{
+    return {double(a.x), double(a.y), double(a.z)};
+}
+
 struct vecSum
 {
-    vec3 operator()(const vec3& a, const vec3& b) const { return a + b; }
+    sumVec operator()(const sumVec& a, const sumVec& b) const
+    {
+        return a + b;
+    }
 };
 
 } // End anonymous namespace
@@ -390,7 +402,7 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
     const bool laminar = m.viscosity == viscosityType::laminar;
     const scalar fourNu = 4*m.nu;
     const scalar eta2 = m.eta2();
-    vec3 F{0, 0, 0};
+    sumVec F{0, 0, 0};
 
     withKernel(m, [&](auto kernel)
     {
@@ -432,10 +444,11 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
             });
             return f;
         };
-        F = parallelReduce(openmpExec{}, pf.size(), onWall,
-                           vec3{0, 0, 0}, vecSum{});
+        F = parallelReduce(openmpExec{}, pf.size(),
+                           [&](const label w) { return toSum(onWall(w)); },
+                           sumVec{0, 0, 0}, vecSum{});
     });
-    return {F.x, F.y, F.z};
+    return {scalar(F.x), scalar(F.y), scalar(F.z)};
 }
 
 
@@ -462,16 +475,16 @@ std::vector<scalar> energy::values(const solverSnapshot& s) const
     const particleFields& pf = s.particles;
     const vec3 g = s.model.g;
     // (mass, kinetic, potential) in a vec3 for the reduction.
-    const vec3 e = parallelReduce(openmpExec{}, pf.size(),
+    const sumVec e = parallelReduce(openmpExec{}, pf.size(),
         [&](const label i)
         {
-            if (pf.kind[i] != fluidKind) return vec3{0, 0, 0};
-            const scalar m = pf.mass[i];
-            return vec3{m, 0.5*m*magSqr(pf.velocity[i]),
-                        -m*dot(g, pf.position[i])};
+            if (pf.kind[i] != fluidKind) return sumVec{0, 0, 0};
+            const double m = pf.mass[i];
+            return sumVec{m, 0.5*m*magSqr(pf.velocity[i]),
+                          -m*dot(g, pf.position[i])};
         },
-        vec3{0, 0, 0}, vecSum{});
-    return {e.x, e.y, e.z};
+        sumVec{0, 0, 0}, vecSum{});
+    return {scalar(e.x), scalar(e.y), scalar(e.z)};
 }
 
 

@@ -18,7 +18,8 @@ std::vector<vec3> cantileverLattice(const label nLength, const label nLayers,
     {
         for (label j = 0; j < nLayers; ++j)
         {
-            x.push_back({(i + 0.5)*l0, (j + 0.5 - 0.5*nLayers)*l0, 0});
+            x.push_back({scalar((i + 0.5)*l0),
+                         scalar((j + 0.5 - 0.5*nLayers)*l0), 0});
         }
     }
     return x;

@@ -57,11 +57,12 @@ scalar surfaceShift(const vcpmMaterial& m)
     for (int j = 0; j < nRef; ++j)
     for (int i = 0; i < nx; ++i)
     {
-        const vec3 p{(i - nx/2)*l0, (j - 0.5*(nRef - 1))*l0, (k - nz/2)*l0};
+        const vec3 p{(i - nx/2)*l0, scalar((j - 0.5*(nRef - 1))*l0),
+                     (k - nz/2)*l0};
         if (i == nx/2 && k == nz/2) middle.push_back(label(X.size()));
         X.push_back(p);
         x.push_back(p + kappa*vec3{p.x*p.y,
-                                   -0.5*(p.x*p.x + nuP*p.y*p.y), 0});
+                                   scalar(-0.5*(p.x*p.x + nuP*p.y*p.y)), 0});
     }
     const vcpmConstants c{{2*m.k1, 2*m.k2}, {m.T, m.T}};
     auto energy = [&](const scalar gamma)

@@ -99,10 +99,10 @@ TEST(dictionaryLexer, numbersAndPunctuation)
     EXPECT_EQ(d.get<label>("i"), 42);
     EXPECT_EQ(d.get<label>("n"), -7);
     EXPECT_EQ(tokensOf(d, "f")[0].type, token::kind::floating);
-    EXPECT_DOUBLE_EQ(d.get<scalar>("f"), 1.5e-3);
-    EXPECT_DOUBLE_EQ(d.get<scalar>("g"), 0.25);
-    EXPECT_DOUBLE_EQ(d.get<scalar>("h"), -0.5);
-    EXPECT_DOUBLE_EQ(d.get<scalar>("i"), 42.0);   // integers are numbers
+    EXPECT_DOUBLE_EQ(d.get<double>("f"), 1.5e-3);
+    EXPECT_DOUBLE_EQ(d.get<double>("g"), 0.25);
+    EXPECT_DOUBLE_EQ(d.get<double>("h"), -0.5);
+    EXPECT_DOUBLE_EQ(d.get<double>("i"), 42.0);   // integers are numbers
     EXPECT_EQ(d.get<std::int64_t>("big"), 9007199254740993LL);
     // A lone '-' is punctuation.
     const auto& m = tokensOf(d, "minus");
@@ -240,7 +240,7 @@ TEST(dictionaryEntries, foamFileHeaderKeptApart)
     ASSERT_NE(d.header(), nullptr);
     EXPECT_EQ(d.header()->get<std::string>("object"), "fvSolution");
     EXPECT_EQ(d.header()->get<std::string>("location"), "system");
-    EXPECT_EQ(d.header()->get<scalar>("version"), 2.0);
+    EXPECT_EQ(d.header()->get<double>("version"), 2.0);
     EXPECT_FALSE(d.found("FoamFile"));
     EXPECT_EQ(d.keys(), (std::vector<std::string>
         {"solvers", "PISO", "relaxationFactors"}));
@@ -260,16 +260,16 @@ TEST(dictionaryEntries, openFoamFvSolution)
     EXPECT_EQ(pFinal.keys(), (std::vector<std::string>
         {"solver", "preconditioner", "tolerance", "relTol"}));
     EXPECT_EQ(pFinal.get<std::string>("solver"), "PCG");
-    EXPECT_EQ(pFinal.get<scalar>("relTol"), 0.0);
-    EXPECT_EQ(pFinal.get<scalar>("tolerance"), 1e-06);
+    EXPECT_EQ(pFinal.get<double>("relTol"), 0.0);
+    EXPECT_EQ(pFinal.get<double>("tolerance"), 1e-06);
     // $U found through the pattern "(U|k|epsilon)".
     const auto& kFinal = solvers.subDict("kFinal");
     EXPECT_EQ(kFinal.get<std::string>("smoother"), "symGaussSeidel");
-    EXPECT_EQ(kFinal.get<scalar>("relTol"), 0.0);
-    EXPECT_EQ(solvers.subDict("epsilon").get<scalar>("relTol"), 0.1);
-    EXPECT_EQ(d.subDict("PISO").get<scalar>("pTolerance"), 1e-06);
+    EXPECT_EQ(kFinal.get<double>("relTol"), 0.0);
+    EXPECT_EQ(solvers.subDict("epsilon").get<double>("relTol"), 0.1);
+    EXPECT_EQ(d.subDict("PISO").get<double>("pTolerance"), 1e-06);
     EXPECT_EQ(d.subDict("relaxationFactors").subDict("equations")
-        .get<scalar>("U"), 1.0);
+        .get<double>("U"), 1.0);
 }
 
 
@@ -306,21 +306,21 @@ TEST(dictionaryMacros, valueSubstitutionAndScoping)
     EXPECT_EQ(t[0].text, "uniform");
     EXPECT_EQ(t[3].integerValue, 2);
     EXPECT_EQ(t[3].line, 3);                 // expansion carries the $ line
-    EXPECT_EQ(inlet.get<scalar>("speed"), 1.5);
+    EXPECT_EQ(inlet.get<double>("speed"), 1.5);
 
     const auto& s = d.subDict("scoped");
     EXPECT_EQ(s.get<label>("c1"), 7);
     EXPECT_EQ(s.get<label>("c2"), 7);
     EXPECT_EQ(s.get<label>("c3"), 1);
-    EXPECT_EQ(s.get<scalar>("c4"), 0.3);
+    EXPECT_EQ(s.get<double>("c4"), 0.3);
     EXPECT_EQ(s.get<label>("c5"), 7);
-    EXPECT_EQ(s.get<scalar>("c6"), 0.3);
-    EXPECT_EQ(s.get<scalar>("c7"), 1.5);
-    EXPECT_EQ(s.get<scalar>("c8"), 2.5);
-    EXPECT_EQ(s.get<scalar>("c9"), 1.5);
+    EXPECT_EQ(s.get<double>("c6"), 0.3);
+    EXPECT_EQ(s.get<double>("c7"), 1.5);
+    EXPECT_EQ(s.get<double>("c8"), 2.5);
+    EXPECT_EQ(s.get<double>("c9"), 1.5);
     EXPECT_EQ(s.get<label>("c10"), 7);
-    EXPECT_EQ(s.subDict("deep").get<scalar>("d1"), 1.5);
-    EXPECT_EQ(s.subDict("deep").get<scalar>("d2"), 2.5);
+    EXPECT_EQ(s.subDict("deep").get<double>("d1"), 1.5);
+    EXPECT_EQ(s.subDict("deep").get<double>("d2"), 2.5);
 }
 
 
@@ -397,8 +397,8 @@ TEST(dictionaryMacros, environmentFallback)
         "SPHVCPM_TEST_DIR local;\n"
         "which $SPHVCPM_TEST_DIR;\n"     // the dictionary comes first
     );
-    EXPECT_EQ(d.get<scalar>("nu"), 1e-05);
-    EXPECT_EQ(d.get<scalar>("braced"), 1e-05);
+    EXPECT_EQ(d.get<double>("nu"), 1e-05);
+    EXPECT_EQ(d.get<double>("braced"), 1e-05);
     EXPECT_EQ(d.get<std::string>("file"), "/some/where/file.stl");
     EXPECT_EQ(tokensOf(d, "file")[0].type, token::kind::string);
     EXPECT_EQ(d.get<std::string>("which"), "local");
@@ -429,8 +429,8 @@ TEST(dictionaryDirectives, includeRelativeRemoveAndHeaderDropped)
         dictionary::fromFile(dataDir + "/constant/transportProperties");
     EXPECT_EQ(d.keys(), (std::vector<std::string>{"transportModel", "nu",
                                                   "rho"}));
-    EXPECT_EQ(d.get<scalar>("nu"), 1e-06);
-    EXPECT_EQ(d.get<scalar>("rho"), 1000.0);
+    EXPECT_EQ(d.get<double>("nu"), 1e-06);
+    EXPECT_EQ(d.get<double>("rho"), 1000.0);
     EXPECT_EQ(d.header()->get<std::string>("object"),
               "transportProperties");
 }
@@ -460,7 +460,7 @@ TEST(dictionaryDirectives, includeIntoSubDictAndVariableFileNames)
     EXPECT_EQ(p.keys(), (std::vector<std::string>{"solver", "tolerance",
                                                   "relTol", "after"}));
     EXPECT_EQ(p.get<std::string>("solver"), "PCG");
-    EXPECT_EQ(p.get<scalar>("relTol"), 0.1);
+    EXPECT_EQ(p.get<double>("relTol"), 0.1);
     // An entry remembers the file it came from.
     EXPECT_EQ(p.lookupEntry("solver").file(),
               (dir.path()/"system"/"../common/solver").string());
@@ -627,13 +627,13 @@ TEST(dictionaryValues, vectorsAndLists)
     EXPECT_EQ(d.get<vec3>("v2"), (vec3{1, 2, 0}));
     EXPECT_EQ(d.get<vec3>("gd"), (vec3{0, 0, -9.81}));
     EXPECT_EQ(d.get<vec3>("gu"), (vec3{1, 2, 3}));
-    EXPECT_EQ(d.get<std::vector<scalar>>("s"),
-              (std::vector<scalar>{1, 2.5, -3}));
-    EXPECT_EQ(d.get<std::vector<scalar>>("sn"),
-              (std::vector<scalar>{1, 2, 3}));
-    EXPECT_EQ(d.get<std::vector<scalar>>("su"),
-              (std::vector<scalar>{0.5, 0.5, 0.5, 0.5}));
-    EXPECT_TRUE(d.get<std::vector<scalar>>("empty").empty());
+    EXPECT_EQ(d.get<std::vector<double>>("s"),
+              (std::vector<double>{1, 2.5, -3}));
+    EXPECT_EQ(d.get<std::vector<double>>("sn"),
+              (std::vector<double>{1, 2, 3}));
+    EXPECT_EQ(d.get<std::vector<double>>("su"),
+              (std::vector<double>{0.5, 0.5, 0.5, 0.5}));
+    EXPECT_TRUE(d.get<std::vector<double>>("empty").empty());
     EXPECT_TRUE(d.get<std::vector<label>>("empty0").empty());
     EXPECT_EQ(d.get<std::vector<label>>("l"), (std::vector<label>{1, 2, 3}));
     EXPECT_EQ(d.get<std::vector<label>>("lu"), (std::vector<label>{7, 7}));
@@ -690,7 +690,7 @@ TEST(dictionaryLookup, missingKeywordSuggestsClosest)
         "sub\n{\n    writeInterval 0.1;\n}\n",
         file
     );
-    const auto err = catchFatal([&]{ d.get<scalar>("endTime"); });
+    const auto err = catchFatal([&]{ d.get<double>("endTime"); });
     expectError(err, file, 0,
         {"Keyword 'endTime' is undefined in dictionary \"" + file + "\"",
          "Did you mean 'endTme'?",
@@ -700,7 +700,7 @@ TEST(dictionaryLookup, missingKeywordSuggestsClosest)
     // In a sub-dictionary: its scoped name and the line of its brace.
     const auto sub = catchFatal([&]
     {
-        d.subDict("sub").get<scalar>("writeIntervall");
+        d.subDict("sub").get<double>("writeIntervall");
     });
     expectError(sub, file, 6,
         {"Keyword 'writeIntervall' is undefined in dictionary \""
@@ -714,7 +714,7 @@ TEST(dictionaryLookup, missingKeywordSuggestsClosest)
     // A value asked for as a sub-dictionary, and the other way round.
     expectError(catchFatal([&]{ d.subDict("deltaT"); }), file, 4,
         {"Keyword 'deltaT' is not a sub-dictionary", "found the value '1e-5'"});
-    expectError(catchFatal([&]{ d.get<scalar>("sub"); }), file, 5,
+    expectError(catchFatal([&]{ d.get<double>("sub"); }), file, 5,
         {"Keyword 'sub'", "found a sub-dictionary"});
 }
 
@@ -854,7 +854,7 @@ TEST(dictionaryRoundTrip, everySetType)
     d.set("str", std::string("with \"quotes\", \\backslash and\nnewline"));
     d.set("path", std::string("constant/geometry/gate.stl"));
     d.set("v", vec3{1e-3, -2, 3.25});
-    d.set("ls", std::vector<scalar>{0.5, 1e-7, -3});
+    d.set("ls", std::vector<double>{0.5, 1e-7, -3});
     d.set("ll", std::vector<label>{});
     d.set("lw", std::vector<std::string>{"a", "b c", "\"q\""});
     d.set("lv", std::vector<vec3>{{1, 2, 3}, {4, 5, 6}});
@@ -865,17 +865,17 @@ TEST(dictionaryRoundTrip, everySetType)
     EXPECT_EQ(back.get<bool>("b"), false);
     EXPECT_EQ(back.get<label>("l"), -42);
     EXPECT_EQ(back.get<std::int64_t>("i64"), std::int64_t(1) << 40);
-    EXPECT_EQ(back.get<scalar>("s1"), 0.1);
-    EXPECT_EQ(back.get<scalar>("s2"), 1.0/3.0);
-    EXPECT_EQ(back.get<scalar>("s3"), 6.02214076e23);
-    EXPECT_EQ(back.get<scalar>("s4"), -2.5e-300);
-    EXPECT_EQ(back.get<scalar>("s5"), 1000.0);
+    EXPECT_EQ(back.get<double>("s1"), 0.1);
+    EXPECT_EQ(back.get<double>("s2"), 1.0/3.0);
+    EXPECT_EQ(back.get<double>("s3"), 6.02214076e23);
+    EXPECT_EQ(back.get<double>("s4"), -2.5e-300);
+    EXPECT_EQ(back.get<double>("s5"), 1000.0);
     EXPECT_EQ(back.get<std::string>("str"),
               "with \"quotes\", \\backslash and\nnewline");
     EXPECT_EQ(back.get<std::string>("path"), "constant/geometry/gate.stl");
     EXPECT_EQ(back.get<vec3>("v"), (vec3{1e-3, -2, 3.25}));
-    EXPECT_EQ(back.get<std::vector<scalar>>("ls"),
-              (std::vector<scalar>{0.5, 1e-7, -3}));
+    EXPECT_EQ(back.get<std::vector<double>>("ls"),
+              (std::vector<double>{0.5, 1e-7, -3}));
     EXPECT_TRUE(back.get<std::vector<label>>("ll").empty());
     EXPECT_EQ(back.get<std::vector<std::string>>("lw"),
               (std::vector<std::string>{"a", "b c", "\"q\""}));

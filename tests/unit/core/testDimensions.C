@@ -25,7 +25,7 @@ bool hasDimensions(const dictionary& d, const std::string& key,
 {
     try
     {
-        d.getDimensioned<scalar>(key, expected);
+        d.getDimensioned<double>(key, expected);
         return true;
     }
     catch (const FatalError&)
@@ -83,11 +83,11 @@ TEST(dimensionedValues, allWrittenForms)
     const auto nuDims = dimensions::kinematicViscosity();
     for (const char* k : {"nu1", "nu2", "nu3", "nu4", "nu5", "nu6", "nu7"})
     {
-        EXPECT_EQ(d.get<scalar>(k), 1e-06) << k;
-        EXPECT_EQ(d.getDimensioned<scalar>(k, nuDims), 1e-06) << k;
+        EXPECT_EQ(d.get<double>(k), 1e-06) << k;
+        EXPECT_EQ(d.getDimensioned<double>(k, nuDims), 1e-06) << k;
     }
-    EXPECT_EQ(d.getDimensioned<scalar>("rho", dimensions::density()), 1000);
-    EXPECT_EQ(d.getDimensioned<scalar>("rho2", dimensions::density()), 1000);
+    EXPECT_EQ(d.getDimensioned<double>("rho", dimensions::density()), 1000);
+    EXPECT_EQ(d.getDimensioned<double>("rho2", dimensions::density()), 1000);
     for (const char* k : {"p", "p2", "p3", "p4", "E"})
     {
         EXPECT_TRUE(hasDimensions(d, k, dimensions::pressure())) << k;
@@ -110,9 +110,9 @@ TEST(dimensionedValues, allWrittenForms)
     EXPECT_EQ(d.getDimensioned<vec3>("g2", dimensions::acceleration()),
               (vec3{0, 0, -9.81}));
     // Dimensions are optional: nothing written, nothing to check.
-    EXPECT_EQ(d.getDimensioned<scalar>("plain", dimensions::length()), 2.5);
+    EXPECT_EQ(d.getDimensioned<double>("plain", dimensions::length()), 2.5);
     // get ignores the dimensions.
-    EXPECT_EQ(d.get<scalar>("E"), 1e9);
+    EXPECT_EQ(d.get<double>("E"), 1e9);
     EXPECT_EQ(d.get<vec3>("g2"), (vec3{0, 0, -9.81}));
 }
 
@@ -129,7 +129,7 @@ TEST(dimensionedValues, mismatchShowsExpectedAndFound)
     (
         catchFatal([&]
         {
-            d.getDimensioned<scalar>("nu", dimensions::kinematicViscosity());
+            d.getDimensioned<double>("nu", dimensions::kinematicViscosity());
         }),
         file, 2,
         {"Keyword 'nu'", "dimensions do not match",
@@ -144,7 +144,7 @@ TEST(dimensionedValues, mismatchShowsExpectedAndFound)
         file, 3,
         {"expected [0 1 -2 0 0 0 0]", "found [0 1 -1 0 0 0 0]"}
     );
-    EXPECT_EQ(d.getDimensioned<scalar>("rho0", dimensions::density()), 1000);
+    EXPECT_EQ(d.getDimensioned<double>("rho0", dimensions::density()), 1000);
 }
 
 
@@ -184,7 +184,7 @@ TEST(dimensionedValues, malformedDimensions)
         const auto d = dictionary::fromString(c.text, file);
         SCOPED_TRACE(c.text);
         const auto key = d.keys().back();
-        expectError(catchFatal([&]{ d.get<scalar>(key); }), file, c.line,
+        expectError(catchFatal([&]{ d.get<double>(key); }), file, c.line,
                     c.parts);
     }
 }

@@ -6,6 +6,7 @@
 // volume, subtraction, alignment of the nodes, and region volumes.
 
 #include "boxShape.H"
+#include "../testPrecision.H"
 #include "lattice.H"
 #include "sphereShape.H"
 #include "testGeometryTools.H"
@@ -83,6 +84,8 @@ TEST(lattice, boxCountsExact)
 
 TEST(lattice, boxCountsExactAnywhere)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     // A box n dp long holds n nodes per axis wherever it starts: on a
     // node, half-way between nodes, or at a random fraction.
     std::mt19937_64 gen(11);
@@ -200,6 +203,8 @@ TEST(lattice, subtraction)
 
 TEST(lattice, alignment)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     const vec3 origin{0.0123, -0.4, 0.7};
     const scalar dp = 0.013;
     for (const int nDim : {2, 3})
@@ -241,6 +246,8 @@ TEST(lattice, alignment)
 
 TEST(lattice, regionVolume)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     const scalar dp = 0.01;
     EXPECT_NEAR(shapesRegion("b { shape box; min (0 0 0);"
         " max (0.4 0.3 0); }", 2, dp).volume(), 0.12, 1e-15);

@@ -7,6 +7,7 @@
 // names file, line and keyword.
 
 #include "lattice.H"
+#include "../testPrecision.H"
 #include "latticeMembers.H"
 #include "particleGenerator.H"
 #include "pointLocator.H"
@@ -167,6 +168,8 @@ void expectFields(const particleBody& b, const vec3& U, scalar rho)
 
 TEST(particleGenerator, exampleCase)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     testCase c(exampleDict);
     particleGenerator gen(c.path());
     EXPECT_EQ(gen.nDimensions(), 2);
@@ -234,6 +237,8 @@ TEST(particleGenerator, exampleCase)
 
 TEST(particleGenerator, fluidTouchingContainer)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     // The fluid box reaches into the wall layers: the nodes there go, the
     // ones a spacing away from the wall stay, so the count is exact.
     const std::string dict = replaced(replaced(exampleDict,
@@ -300,6 +305,8 @@ TEST(particleGenerator, fluidOverlappingSolid)
 
 TEST(particleGenerator, threeDimensionalTank)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     const std::string dict =
         "nDimensions 3;\ndp 0.0125;\nbodies\n{\n"
         "    tank { type wall; rho 1000; container { min (0 0 0);"
@@ -562,6 +569,8 @@ std::vector<badCase> badCases()
 
 TEST(particleGenerator, badInput)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     for (const badCase& b : badCases())
     {
         SCOPED_TRACE(b.name);

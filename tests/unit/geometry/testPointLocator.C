@@ -5,6 +5,7 @@
 // and with sparse cell keys (two clusters far apart).
 
 #include "pointLocator.H"
+#include "../testPrecision.H"
 #include "testGeometryTools.H"
 
 #include <gtest/gtest.h>
@@ -71,7 +72,7 @@ void compareWithBruteForce(const std::vector<vec3>& points,
     int nNear = 0;
     for (const vec3& p : queries)
     {
-        for (const scalar d : {cell, 0.5*cell, 0.1*cell})
+        for (const scalar d : {cell, scalar(0.5*cell), scalar(0.1*cell)})
         {
             const bool want = bruteAnyWithin(points, p, d);
             ASSERT_EQ(locator.anyWithin(p, d), want)
@@ -149,6 +150,8 @@ TEST(pointLocator, latticeNeighbours)
 
 TEST(pointLocator, emptyAndErrors)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     const pointLocator none({}, 0.1);
     EXPECT_FALSE(none.anyWithin({0, 0, 0}, 0.1));
     EXPECT_EQ(none.nearestWithinCell({0, 0, 0}), 0.1);

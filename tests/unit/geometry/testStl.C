@@ -7,6 +7,7 @@
 // tiny gaps), volumes, transforms and the stl shape in generateParticles.
 
 #include "lattice.H"
+#include "../testPrecision.H"
 #include "particleGenerator.H"
 #include "stlReader.H"
 #include "stlShape.H"
@@ -447,6 +448,8 @@ TEST(stl, cavityAndTouchingBodies)
 
 TEST(stl, nestedShellsAndManyShells)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     // A ball in a hollow ball: the volumes alternate in sign whatever the
     // orientation of each shell.
     soup nested = icosphere({0, 0, 0}, 1, 3);
@@ -524,19 +527,21 @@ TEST(stl, overflowingCoordinatesDoNotCrash)
 {
     // Found with the fuzz target: a cube of +-1e308 overflows every area
     // and extent to inf or NaN. Answers are meaningless, but no crash.
+    // (+-3e38 in single precision, near the largest float.)
+    const scalar huge = scalar(sizeof(scalar) == 8 ? 1e308 : 3e38);
     const stlData d = [&]()
     {
-        const std::string text = asciiSTL(cube({-1e308, -1e308, -1e308},
-                                               {1e308, 1e308, 1e308}));
+        const std::string text = asciiSTL(cube({-huge, -huge, -huge},
+                                               {huge, huge, huge}));
         return parseSTL(text.data(), text.size(), "huge.stl");
     }();
-    for (const scalar merge : {0.0, 1e-6, 1e300})
+    for (const scalar merge : {scalar(0), scalar(1e-6), vGreat})
     {
         const triSurface surf(d.vertices, merge);
         const triSurfaceInside test(surf);
         (void)surf.volume();
         (void)test.inside({0, 0, 0});
-        (void)test.inside({1e308, 0, -1e308});
+        (void)test.inside({huge, 0, -huge});
     }
 }
 
@@ -545,6 +550,8 @@ TEST(stl, overflowingCoordinatesDoNotCrash)
 
 TEST(stl, scaleRotateTranslate)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     const scratchDir dir("stl");
     // A 2 x 1 x 1 box in mm.
     writeFile(dir.path()/"constant"/"geometry"/"box.stl",

@@ -8,6 +8,7 @@
 // the cut of the surface by z = 0.
 
 #include "lattice.H"
+#include "../testPrecision.H"
 #include "particleGenerator.H"
 #include "polygonShape.H"
 #include "seedFillShape.H"
@@ -96,6 +97,8 @@ scalar boxDistance(const vec3& p, const vec3& lo, const vec3& hi, bool& in)
 
 TEST(surfaceFill, nearestPointMatchesBruteForce)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     const triSurface surf(icosphere({0.3, 0.2, 0.1}, 0.5, 3), 1e-9);
     const scalar radius = 0.2;
     const triSurfaceDistance near(surf, radius);
@@ -421,6 +424,8 @@ TEST(surfaceFill, layersOnAnOpenTankFollowTheNormals)
 
 TEST(surfaceFill, generatorFillsATankFromSTLWithWallsAndWater)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     const surfaceCase c;
     c.add("tank.stl", openTank());
     writeText(c.dir.path()/"system"/"generateParticlesDict",
@@ -470,6 +475,8 @@ std::size_t count2D(const surfaceCase& c, const std::string& text, scalar dp,
 
 TEST(surfaceFill, polygonsFillByTheBoxRule)
 {
+    // Exact double values or digits of geometry (single: float rounding).
+    SPHVCPM_DOUBLE_ONLY();
     const surfaceCase c;
     scalar area = 0;
     // Both orientations, the boxes' rule on edges: exactly 10 x 10.

@@ -8,6 +8,7 @@
 // and the errors of makeCellGrid.
 
 #include "cellList.H"
+#include "../testPrecision.H"
 #include "error.H"
 
 #include <gtest/gtest.h>
@@ -411,6 +412,8 @@ const scalar decSupport = 0.07;
 
 TEST(cellList, uniformClouds)
 {
+    // Exact cell membership of points on cell faces, in double digits.
+    SPHVCPM_DOUBLE_ONLY();
     for (const int nDim : {2, 3})
     {
         std::mt19937_64 gen(11 + nDim);
@@ -424,6 +427,8 @@ TEST(cellList, uniformClouds)
 
 TEST(cellList, clusteredClouds)
 {
+    // Exact cell membership of points on cell faces, in double digits.
+    SPHVCPM_DOUBLE_ONLY();
     for (const int nDim : {2, 3})
     {
         std::mt19937_64 gen(23 + nDim);
@@ -440,6 +445,8 @@ TEST(cellList, clusteredClouds)
 // are exactly one support apart (not neighbours: r < support is strict).
 TEST(cellList, pointsOnFacesDyadic)
 {
+    // Exact cell membership of points on cell faces, in double digits.
+    SPHVCPM_DOUBLE_ONLY();
     for (const int nDim : {2, 3})
     {
         std::mt19937_64 gen(37 + nDim);
@@ -456,6 +463,8 @@ TEST(cellList, pointsOnFacesDyadic)
 // pair nominally one support apart may measure a hair less than it.
 TEST(cellList, pointsOnFacesDecimal)
 {
+    // Exact cell membership of points on cell faces, in double digits.
+    SPHVCPM_DOUBLE_ONLY();
     for (const int nDim : {2, 3})
     {
         std::mt19937_64 gen(41 + nDim);
@@ -523,6 +532,8 @@ TEST(cellList, largeCloudSerialEqualsOpenmp)
 // makeCellGrid makes cells a relative 1e-9 larger to leave that margin.
 TEST(cellList, pairJustInsideSupportIsFound)
 {
+    // Exact cell membership of points on cell faces, in double digits.
+    SPHVCPM_DOUBLE_ONLY();
     struct pairCase
     {
         scalar lower, support;
@@ -620,6 +631,8 @@ TEST(cellList, emptyAndAllOutside)
 
 TEST(cellList, cellOfOutsideAndNonFinite)
 {
+    // Exact cell membership of points on cell faces, in double digits.
+    SPHVCPM_DOUBLE_ONLY();
     const cellGrid g = makeCellGrid({-1, -1, -1}, {1, 1, 1}, 0.3, 2, 3);
     EXPECT_EQ(g.cellOf({NaN, 0, 0}), g.nCells());
     EXPECT_EQ(g.cellOf({0, NaN, 0}), g.nCells());
@@ -629,9 +642,11 @@ TEST(cellList, cellOfOutsideAndNonFinite)
     EXPECT_EQ(g.cellOf({-1 - 1e-12, 0, 0}), g.nCells());
     EXPECT_EQ(g.cellOf({-1, -1, -1}), 0);
     EXPECT_EQ(g.cellOf({1, 1, 1}), g.nCells() - 1);
-    // Large coordinates must not overflow into a valid cell index.
-    EXPECT_EQ(g.cellOf({1e300, 0, 0}), g.nCells());
-    EXPECT_EQ(g.cellOf({-1e300, 0, 0}), g.nCells());
+    // Large coordinates must not overflow into a valid cell index (near
+    // the largest scalar of either precision).
+    const scalar huge = scalar(sizeof(scalar) == 8 ? 1e300 : 1e38);
+    EXPECT_EQ(g.cellOf({huge, 0, 0}), g.nCells());
+    EXPECT_EQ(g.cellOf({-huge, 0, 0}), g.nCells());
 
     const cellGrid g2 = makeCellGrid({-1, -1, 0}, {1, 1, 0}, 0.3, 1, 2);
     EXPECT_EQ(g2.nz, 1);
@@ -641,6 +656,8 @@ TEST(cellList, cellOfOutsideAndNonFinite)
 
 TEST(cellList, makeCellGridErrors)
 {
+    // Exact cell membership of points on cell faces, in double digits.
+    SPHVCPM_DOUBLE_ONLY();
     const vec3 lo{0, 0, 0}, hi{1, 1, 1};
     EXPECT_THROW(makeCellGrid(lo, hi, 0, 1, 3), FatalError);
     EXPECT_THROW(makeCellGrid(lo, hi, -0.1, 1, 3), FatalError);

@@ -78,7 +78,7 @@ TEST(particleBody, newBodyHasPositionAndId)
     EXPECT_EQ(body.name(), "gate");
     EXPECT_EQ(body.type(), bodyType::solid);
     EXPECT_EQ(body.nDimensions(), 2);
-    EXPECT_EQ(body.dp(), 0.005);
+    EXPECT_EQ(body.dp(), scalar(0.005));
     EXPECT_EQ(body.size(), 0);
     EXPECT_EQ(body.nextId(), 0);
     EXPECT_EQ(body.fieldNames(), (std::vector<std::string>{"id", "position"}));

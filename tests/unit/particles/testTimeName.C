@@ -20,7 +20,7 @@ namespace
 {
 
 // The values every row of the table below names, in order.
-const std::vector<scalar> values =
+const std::vector<double> values =
     {0, 0.05, 1e-05, 1.5, 0.1 + 0.2, 100, 1234567, 1e-4, 2.5};
 
 struct row
@@ -151,7 +151,7 @@ TEST(timeName, formatNames)
 
 TEST(timeName, parse)
 {
-    scalar t = -1;
+    double t = -1;
     for (const row& r : table)
     {
         for (std::size_t i = 0; i < values.size(); ++i)
@@ -188,21 +188,21 @@ TEST(timeName, roundTrips)
     // A name parses to a time that is given the same name again, in every
     // format and precision; at 17 digits (general) the time is exact.
     std::mt19937_64 gen(11);
-    std::vector<scalar> times(values);
+    std::vector<double> times(values.begin(), values.end());
     for (int i = 0; i < 300; ++i)
     {
         times.push_back(std::abs(test::randomScalar(gen)));
     }
-    for (scalar dt : {1e-5, 0.001/3, 0.0125})
+    for (double dt : {1e-5, 0.001/3, 0.0125})
     {
-        scalar t = 0;
+        double t = 0;
         for (int i = 0; i < 100; ++i)
         {
             t += dt;
             times.push_back(t);
         }
     }
-    for (scalar t : times)
+    for (double t : times)
     {
         for (timeFormat f :
             {timeFormat::general, timeFormat::fixed, timeFormat::scientific})
@@ -210,12 +210,12 @@ TEST(timeName, roundTrips)
             for (int p : {1, 3, 6, 8, 12, 17})
             {
                 const std::string name = timeName(t, f, p);
-                scalar back = -1;
+                double back = -1;
                 ASSERT_TRUE(parseTimeName(name, back)) << name;
                 EXPECT_EQ(timeName(back, f, p), name);
             }
         }
-        scalar back = -1;
+        double back = -1;
         ASSERT_TRUE(parseTimeName(timeName(t, timeFormat::general, 17), back));
         EXPECT_EQ(back, t);
     }
