@@ -4,6 +4,11 @@ set -u
 nPassed=0
 nFailed=0
 
+# Whether the run that wrote log was a single-precision build (its banner
+# says so): comparisons to round-off then use float's, documented where
+# used (docs/solver.md, "Precision").
+singleBuild() { grep -q "(single precision)" "$1"; }
+
 pass() { nPassed=$((nPassed + 1)); echo "PASS: $*"; }
 fail() { nFailed=$((nFailed + 1)); echo "FAIL: $*"; }
 
