@@ -40,4 +40,6 @@ scratch=$(mktemp -d "${TMPDIR:-/tmp}/sphvcpmTest.XXXXXX")
 
 : "${SPHVCPM_DIR:=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}"
 export SPHVCPM_DIR
-export PATH="$SPHVCPM_DIR/platforms/bin:$SPHVCPM_DIR/bin:$PATH"
+# SPHVCPM_APPBIN: the build's applications (platforms/bin-single for a
+# single-precision build, set by CTest).
+export PATH="${SPHVCPM_APPBIN:-$SPHVCPM_DIR/platforms/bin}:$SPHVCPM_DIR/bin:$PATH"
