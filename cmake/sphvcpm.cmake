@@ -65,7 +65,7 @@ function(sphvcpm_add_script_test name script)
         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
     set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77
         PROCESSORS ${ARG_THREADS}
-        ENVIRONMENT "SPHVCPM_DIR=${PROJECT_SOURCE_DIR};PATH=${SPHVCPM_APPBIN}:${PROJECT_SOURCE_DIR}/bin:$ENV{PATH};OMP_NUM_THREADS=${ARG_THREADS};OMP_WAIT_POLICY=passive")
+        ENVIRONMENT "SPHVCPM_DIR=${PROJECT_SOURCE_DIR};SPHVCPM_APPBIN=${SPHVCPM_APPBIN};SPHVCPM_TESTBIN=${SPHVCPM_TESTBIN};PATH=${SPHVCPM_APPBIN}:${PROJECT_SOURCE_DIR}/bin:$ENV{PATH};OMP_NUM_THREADS=${ARG_THREADS};OMP_WAIT_POLICY=passive")
     # COST: seconds on one core, so that a first run (no timing history)
     # starts the longest tests first.
     if(ARG_COST)

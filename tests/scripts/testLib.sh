@@ -4,6 +4,11 @@ set -u
 nPassed=0
 nFailed=0
 
+# Whether the run that wrote log was a single-precision build (its banner
+# says so): comparisons to round-off then use float's, documented where
+# used (docs/solver.md, "Precision").
+singleBuild() { grep -q "(single precision)" "$1"; }
+
 pass() { nPassed=$((nPassed + 1)); echo "PASS: $*"; }
 fail() { nFailed=$((nFailed + 1)); echo "FAIL: $*"; }
 
@@ -35,4 +40,6 @@ scratch=$(mktemp -d "${TMPDIR:-/tmp}/sphvcpmTest.XXXXXX")
 
 : "${SPHVCPM_DIR:=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}"
 export SPHVCPM_DIR
-export PATH="$SPHVCPM_DIR/platforms/bin:$SPHVCPM_DIR/bin:$PATH"
+# SPHVCPM_APPBIN: the build's applications (platforms/bin-single for a
+# single-precision build, set by CTest).
+export PATH="${SPHVCPM_APPBIN:-$SPHVCPM_DIR/platforms/bin}:$SPHVCPM_DIR/bin:$PATH"

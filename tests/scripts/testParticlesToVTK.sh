@@ -7,7 +7,7 @@
 # skipped (exit 77 when everything else passed).
 . "$(dirname "$0")/testLib.sh"
 
-helper="$SPHVCPM_DIR/platforms/tests/writeParticleCase"
+helper="${SPHVCPM_TESTBIN:-$SPHVCPM_DIR/platforms/tests}/writeParticleCase"
 if [ ! -x "$helper" ]; then
     echo "FAIL: test helper $helper not built (./Allwmake -test builds it)"
     exit 1
@@ -110,11 +110,21 @@ if ! command -v pvpython > /dev/null; then
     finish || exit 1
     exit 77
 fi
+# checkVtk.py compares values bit for bit with doubles: a single-precision
+# build writes Float32, so only that ParaView reads it is checked there.
+single=0
+singleBuild "$scratch/log.all" && single=1
 # Reading needs no display; offscreen keeps Qt from looking for one.
 QT_QPA_PLATFORM=offscreen pvpython "$SPHVCPM_DIR/tests/scripts/checkVtk.py" \
     "$run" 0,0.1,0.2 20 10 2 > "$scratch/log.pvpython" 2>&1
 status=$?
 cat "$scratch/log.pvpython"
-check "ParaView reads the series (checkVtk.py)" [ $status -eq 0 ]
+if [ $single = 1 ]; then
+    check "ParaView reads the series (checkVtk.py; single: values not compared)" \
+        [ $(grep -c '^FAIL' "$scratch/log.pvpython") -eq \
+          $(grep -c '^FAIL:.*\(bit-exact\|values\|range\)' "$scratch/log.pvpython") ]
+else
+    check "ParaView reads the series (checkVtk.py)" [ $status -eq 0 ]
+fi
 
 finish

@@ -43,6 +43,9 @@ a=$(timeEntry "$scratch/whole" deltaT); b=$(timeEntry "$scratch/halves" deltaT)
 check "the same last time step ($a, $b)" \
     awk -v a="$a" -v b="$b" 'BEGIN { d = (a - b)/a; exit !(d < 1e-9 && d > -1e-9) }'
 
+# Float round-off (rho of 1000 has ulps of 6e-5) grows over the same steps.
+tol=1e-9
+singleBuild "$scratch/whole/log.sphVcpmFsi" && tol=1e-3
 for body in water box; do
     bodyTable "$scratch/whole/0.06" $body position U rho > "$scratch/a.$body"
     bodyTable "$scratch/halves/0.06" $body position U rho > "$scratch/b.$body"
@@ -52,7 +55,7 @@ for body in water box; do
     # The order of particles sharing a cell can differ after a restart, so
     # sums are added in another order: round-off, nothing more.
     check "$body: restarted fields equal the uninterrupted ones (max |diff| $d)" \
-        awk -v d="$d" 'BEGIN { exit !(d == d + 0 && d < 1e-9) }'
+        awk -v d="$d" -v tol=$tol 'BEGIN { exit !(d == d + 0 && d < tol) }'
 done
 
 # The coupled case: damBreakSmall2D with a rubber plate in the water's way.
@@ -85,6 +88,9 @@ setEnd "$scratch/fsiHalves" 0.32
 (cd "$scratch/fsiHalves" && sphVcpmFsi > log.second 2>&1)
 check "fsi: the continued run succeeds" grep -q '^End' "$scratch/fsiHalves/log.second"
 expectIn "fsi: it starts from 0.3" "$scratch/fsiHalves/log.second" '^Reading time 0.3$'
+# In float the stiff plate's round-off grows to about 1 cm/s in U.
+tol=1e-9
+singleBuild "$scratch/fsiHalves/log.second" && tol=0.05
 for body in water plate; do
     bodyTable "$scratch/fsiWhole/0.32" $body position U > "$scratch/a.$body"
     bodyTable "$scratch/fsiHalves/0.32" $body position U > "$scratch/b.$body"
@@ -92,7 +98,7 @@ for body in water plate; do
         [ -s "$scratch/a.$body" -a "$(wc -l < "$scratch/a.$body")" = "$(wc -l < "$scratch/b.$body")" ]
     d=$(maxDifference "$scratch/a.$body" "$scratch/b.$body")
     check "fsi: $body restarted equals uninterrupted (max |diff| $d)" \
-        awk -v d="$d" 'BEGIN { exit !(d == d + 0 && d < 1e-9) }'
+        awk -v d="$d" -v tol=$tol 'BEGIN { exit !(d == d + 0 && d < tol) }'
 done
 # The plate had moved: the comparison is not between two resting plates.
 u=$(fieldValues "$scratch/fsiWhole/0.32/plate/displacement" | awk '{ m2 = $1*$1 + $2*$2; if (m2 > m) m = m2 } END { print sqrt(m) }')
