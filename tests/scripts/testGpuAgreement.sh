@@ -1,6 +1,6 @@
 #!/bin/bash
 # CPU and GPU agree: the coarse 2D dam break, the 3D dam break tutorial and
-# the 2D elastic gate run a short time with -device cpu and -device cuda,
+# the 2D and 3D elastic gates run a short time with -device cpu and -device cuda,
 # and their fields and function-object histories are compared. The two
 # sum a particle's neighbours in another order (each pair once on the
 # host, per particle on the GPU), so they agree to round-off grown over
@@ -99,5 +99,10 @@ compareFields damBreak3D 0.02 position 1e-7 U 1e-5 rho 1e-3 p 1e-1
 runBoth gate2D "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreakElasticGate2D" 0.05
 compareFields gate2D 0.05 position 1e-7 U 1e-5 rho 1e-3 p 1e-1 displacement 1e-8
 compareHistory gate2D gateTip/0/displacement.dat 1e-4
+
+# The 3D gate (simple cubic lattice, 16,000 solid particles): 0.01 s.
+runBoth gate3D "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreakElasticGate3D" 0.01
+compareFields gate3D 0.01 position 1e-7 U 1e-5 rho 1e-3 p 1e-1 displacement 1e-8
+compareHistory gate3D gateTip/0/displacement.dat 1e-4
 
 finish
