@@ -9,16 +9,7 @@
 . "$(dirname "$0")/testLib.sh"
 . "$(dirname "$0")/fieldTools.sh"
 
-probe="$scratch/probe"
-cp -r "$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D" "$probe"
-(cd "$probe" && generateParticles > log.generateParticles 2>&1 \
-    && sed -i "s/^endTime .*/endTime 0.001;/" system/controlDict \
-    && sphVcpmFsi -device cuda > log.cuda 2>&1)
-if grep -q "no GPU can be used" "$probe/log.cuda"; then
-    echo "No GPU: $(grep -o 'no GPU can be used.*' "$probe/log.cuda" | head -1)"
-    echo "Skipped: the CPU-GPU agreement needs a GPU"
-    exit 77
-fi
+skipWithoutGpu "the CPU-GPU agreement"
 
 # within <a> <b> <tolerance>: |a - b| <= tolerance (numbers from awk)
 within() { awk -v d="$1" -v t="$2" 'BEGIN { exit !(d == d + 0 && d <= t) }'; }

@@ -43,3 +43,19 @@ export SPHVCPM_DIR
 # SPHVCPM_APPBIN: the build's applications (platforms/bin-single for a
 # single-precision build, set by CTest).
 export PATH="${SPHVCPM_APPBIN:-$SPHVCPM_DIR/platforms/bin}:$SPHVCPM_DIR/bin:$PATH"
+
+# skipWithoutGpu <what>: exits 77 (skipped) when sphVcpmFsi cannot use a
+# GPU here, saying why (a short run of the coarse dam break asks for one).
+skipWithoutGpu()
+{
+    local probe="$scratch/gpuProbe"
+    cp -r "$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D" "$probe"
+    (cd "$probe" && generateParticles > log.generateParticles 2>&1 \
+        && sed -i "s/^endTime .*/endTime 0.001;/" system/controlDict \
+        && sphVcpmFsi -device cuda > log.cuda 2>&1)
+    if grep -q "no GPU can be used" "$probe/log.cuda"; then
+        echo "No GPU: $(grep -o 'no GPU can be used.*' "$probe/log.cuda" | head -1)"
+        echo "Skipped: $1 needs a GPU"
+        exit 77
+    fi
+}

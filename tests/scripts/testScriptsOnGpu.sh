@@ -5,15 +5,7 @@
 # tolerances. Skipped (77) where no GPU can be used.
 . "$(dirname "$0")/testLib.sh"
 
-probe="$scratch/probe"
-cp -r "$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D" "$probe"
-(cd "$probe" && generateParticles > log.generateParticles 2>&1 \
-    && sed -i "s/^endTime .*/endTime 0.001;/" system/controlDict \
-    && sphVcpmFsi -device cuda > log.cuda 2>&1)
-if grep -q "no GPU can be used" "$probe/log.cuda"; then
-    echo "Skipped: no GPU ($(grep -o 'no GPU can be used.*' "$probe/log.cuda" | head -1))"
-    exit 77
-fi
+skipWithoutGpu "running the script tests on the GPU"
 
 for test in testSolverInput testRestart testStability testFsiStability testFsiCoupling; do
     SPHVCPM_DEVICE=cuda bash "$(dirname "$0")/$test.sh" > "$scratch/$test.log" 2>&1
