@@ -39,6 +39,17 @@ elif grep -q '^End' "$scratch/c/log.solver"; then
 else
     fail "-device cuda neither ran nor said why"; tail -5 "$scratch/c/log.solver"
 fi
+# device cuda; in controlDict without a GPU: the error names the file and line.
+fresh; sed -i 's/^endTime .*/&\ndevice cuda;/' "$scratch/c/system/controlDict"
+(cd "$scratch/c" && timeout 60 sphVcpmFsi > log.solver 2>&1)
+if grep -q "no GPU can be used" "$scratch/c/log.solver"; then
+    line=$(grep -n '^device' "$scratch/c/system/controlDict" | cut -d: -f1)
+    expectIn "device cuda; in controlDict without a GPU: names controlDict's line" \
+        "$scratch/c/log.solver" "system/controlDict.* at line $line"
+else
+    check "device cuda; in controlDict ran on this machine's GPU" grep -q '^End' "$scratch/c/log.solver"
+fi
+fresh
 # auto: the GPU when there is one, else the CPU, and the run goes on.
 (cd "$scratch/c" && rm -rf 0.* && timeout 60 sphVcpmFsi -device auto > log.solver 2>&1)
 check "-device auto runs (on a GPU or falling back to the CPU)" grep -q '^End' "$scratch/c/log.solver"

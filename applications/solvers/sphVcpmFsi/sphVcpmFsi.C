@@ -41,11 +41,12 @@ int main(int argc, char* argv[])
         const timeControl control = timeControl::read(args.casePath());
         // -device, else $SPHVCPM_DEVICE (so that a tutorial's Allrun runs
         // on the GPU unchanged: SPHVCPM_DEVICE=cuda ./Allrun), else
-        // controlDict's device.
+        // controlDict's device: empty here, so that the solver's errors
+        // name controlDict's line.
         const char* fromEnvironment = std::getenv("SPHVCPM_DEVICE");
-        const std::string device = args.optionOrDefault("device",
-            fromEnvironment && *fromEnvironment
-          ? std::string(fromEnvironment) : control.device);
+        const std::string asked = args.optionOrDefault("device",
+            fromEnvironment ? std::string(fromEnvironment) : "");
+        const std::string device = asked.empty() ? control.device : asked;
         args.printBanner((device == "cuda" || device == "auto") && gpuAvailable()
             ? cudaDeviceInfo().describe() : "cpu");
 
@@ -63,7 +64,7 @@ int main(int argc, char* argv[])
         }
         else
         {
-            fsiSolver solver(args.casePath(), std::cout, device);
+            fsiSolver solver(args.casePath(), std::cout, asked);
             solver.run();
         }
 
