@@ -55,7 +55,27 @@ label fluidSolidCoupling::subSteps(const std::size_t b, const scalar dt) const
 }
 
 
-label fluidSolidCoupling::advance(const scalar dt,
+void fluidSolidCoupling::setClampMotions
+(
+    const std::vector<const rigidMotion*>& motions
+)
+{
+    clampMotion_ = motions;
+}
+
+
+bodyMove fluidSolidCoupling::clampMoveOf(const std::size_t b, const double t,
+                                         const label k, const scalar subDt)
+    const
+{
+    const rigidMotion* m = b < clampMotion_.size() ? clampMotion_[b] : nullptr;
+    if (!m) return bodyMove::none();
+    return {1, m->transform(t + k*double(subDt)),
+            m->transform(t + (k + 1)*double(subDt))};
+}
+
+
+label fluidSolidCoupling::advance(const double t, const scalar dt,
                                   const std::vector<vec3>& force)
 {
     label most = 0;
@@ -68,9 +88,11 @@ label fluidSolidCoupling::advance(const scalar dt,
         std::copy(force.begin() + offsets_[b],
                   force.begin() + offsets_[b + 1], s.externalForce.begin());
         s.computeForces(openmpExec{});
+        vcpmSolidView v = s.view();
         for (label k = 0; k < n; ++k)
         {
-            s.step(openmpExec{}, subDt);
+            v.clampMove = clampMoveOf(b, t, k, subDt);
+            vcpmStep(openmpExec{}, v, subDt);
         }
         most = std::max(most, n);
     }
@@ -92,22 +114,22 @@ void fluidSolidCoupling::keepForceAsStepStart()
 }
 
 
-label fluidSolidCoupling::advanceFirstHalf(const scalar dt)
+label fluidSolidCoupling::advanceFirstHalf(const double t, const scalar dt)
 {
-    return device_ ? advanceOnDevice(dt, false)
-                   : advance(dt, fluidForceAtStart);
+    return device_ ? advanceOnDevice(t, dt, false)
+                   : advance(t, dt, fluidForceAtStart);
 }
 
 
-label fluidSolidCoupling::advanceSecondHalf(const scalar dt)
+label fluidSolidCoupling::advanceSecondHalf(const double t, const scalar dt)
 {
     if (device_)
     {
-        return advanceOnDevice(dt, true);
+        return advanceOnDevice(t, dt, true);
     }
     parallelFor(openmpExec{}, size(), heldForceOp{fluidForce.data(),
         fluidForceAtStart.data(), heldForce_.data()});
-    return advance(dt, heldForce_);
+    return advance(t, dt, heldForce_);
 }
 
 
@@ -161,7 +183,7 @@ const vec3* fluidSolidCoupling::devicePosition() const { return nullptr; }
 const vec3* fluidSolidCoupling::deviceMeanVelocity() const { return nullptr; }
 bool fluidSolidCoupling::nonFiniteOnDevice() const { return false; }
 void fluidSolidCoupling::toHost() {}
-label fluidSolidCoupling::advanceOnDevice(scalar, bool) { return 0; }
+label fluidSolidCoupling::advanceOnDevice(double, scalar, bool) { return 0; }
 void fluidSolidCoupling::keepForceOnDevice() {}
 void fluidSolidCoupling::saveStepStartOnDevice() {}
 #endif

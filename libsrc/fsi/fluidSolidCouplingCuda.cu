@@ -174,7 +174,7 @@ void fluidSolidCoupling::saveStepStartOnDevice()
 }
 
 
-label fluidSolidCoupling::advanceOnDevice(const scalar dt,
+label fluidSolidCoupling::advanceOnDevice(const double t, const scalar dt,
                                           const bool secondHalf)
 {
     deviceSolids& d = *device_;
@@ -193,16 +193,17 @@ label fluidSolidCoupling::advanceOnDevice(const scalar dt,
     {
         const vcpmSolid& s = *solids_.bodies()[b].solid;
         const label o = offsets_[b];
-        const vcpmSolidView v{s.size(), d.bonds[b].view(), s.constants(),
+        vcpmSolidView v{s.size(), d.bonds[b].view(), s.constants(),
             s.material().mass, s.gravity, s.damping, d.position.data() + o,
             d.velocity.data() + o, d.force.data() + o, held + o,
             d.clamped.data() + o, d.clampVelocity.data() + o,
-            d.stretchSum.data() + 2*o};
+            d.stretchSum.data() + 2*o, bodyMove::none()};
         const label n = subSteps(b, dt);
         const scalar subDt = dt/n;
         vcpmComputeForces(cudaExec{}, v);
         for (label k = 0; k < n; ++k)
         {
+            v.clampMove = clampMoveOf(b, t, k, subDt);
             vcpmStep(cudaExec{}, v, subDt);
         }
         most = std::max(most, n);

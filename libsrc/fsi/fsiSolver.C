@@ -241,9 +241,15 @@ void fsiSolver::readStartTime()
                       model_.shifting != shiftingType::none);
     solids_ = std::make_unique<solidBodySet>(caseDir_, startTimeName_, bodies,
                                              freshStart_, model_.g, log_);
+    motions_ = prescribedMotions(caseDir_, bodies, nDim, true, log_);
+    if (freshStart_)
+    {
+        motions_.placeSolids(*solids_, time_);
+    }
     if (!solids_->empty())
     {
         coupling_ = std::make_unique<fluidSolidCoupling>(*solids_);
+        coupling_->setClampMotions(motions_.clampMotions(*solids_));
         particles_.link.assign(nTotal, -1);
         for (const solidBody& b : solids_->bodies())
         {
@@ -287,7 +293,7 @@ void fsiSolver::readStartTime()
                 model_.rho0*std::pow(body.dp(), nDim);
             for (label i = 0; i < n; ++i, ++k, ++nextSolid)
             {
-                particles_.position[k] = x[i];
+                particles_.position[k] = coupling_->position[nextSolid];
                 particles_.velocity[k] = coupling_->meanVelocity[nextSolid];
                 particles_.rho[k] = model_.rho0;
                 particles_.mass[k] = fluidSideMass;
@@ -324,6 +330,30 @@ void fsiSolver::readStartTime()
     }
     log_<< "    dp = " << dp << " m, " << nDim << "D, time = " << time_
         << "\n" << std::endl;
+    placeMovingWalls();
+}
+
+
+void fsiSolver::placeMovingWalls()
+{
+    wallMoves_.assign(bodies_.size(), bodyMove::none());
+    wallTime_ = time_;
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+    {
+        if (bodies_[b].type != bodyType::wall || !motions_.of(b)) continue;
+        wallsMove_ = true;
+        wallMoves_[b] = motions_.move(b, time_, time_);
+        // A fresh case is generated in the reference configuration; a
+        // restart's walls are already where their motion puts them.
+        const rigidTransform T = motions_.of(b)->transform(time_);
+        for (label i = 0; i < particles_.size(); ++i)
+        {
+            if (particles_.body[i] != b) continue;
+            vec3& x = particles_.position[i];
+            if (freshStart_) x = T.apply(x);
+            particles_.velocity[i] = T.velocityAtPosition(x);
+        }
+    }
 }
 
 
@@ -432,6 +462,40 @@ void fsiSolver::setDomain()
             {
                 lo[d] = std::min(lo[d], x[d]);
                 hi[d] = std::max(hi[d], x[d]);
+            }
+        }
+        // Moving bodies: their box wherever their motion takes them up to
+        // endTime (the box's corners moved, sampled in time).
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+        {
+            if (!motions_.of(b)) continue;
+            vec3 blo{vGreat, vGreat, vGreat}, bhi = -blo;
+            for (label i = 0; i < particles_.size(); ++i)
+            {
+                if (particles_.body[i] != b) continue;
+                for (int d = 0; d < 3; ++d)
+                {
+                    blo[d] = std::min(blo[d], particles_.position[i][d]);
+                    bhi[d] = std::max(bhi[d], particles_.position[i][d]);
+                }
+            }
+            const int nSamples = 2000;
+            for (int k = 0; k <= nSamples; ++k)
+            {
+                const double t = time_
+                  + (control_.endTime - time_)*double(k)/nSamples;
+                const bodyMove m = motions_.move(b, time_, t);
+                for (int c = 0; c < 8; ++c)
+                {
+                    const vec3 corner{c & 1 ? bhi.x : blo.x,
+                        c & 2 ? bhi.y : blo.y, c & 4 ? bhi.z : blo.z};
+                    const vec3 x = m.moved(corner);
+                    for (int d = 0; d < 3; ++d)
+                    {
+                        lo[d] = std::min(lo[d], x[d]);
+                        hi[d] = std::max(hi[d], x[d]);
+                    }
+                }
             }
         }
         const scalar gMag = mag(model_.g);
@@ -552,6 +616,11 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
     {
         coupling_->restoreStepStart();
         hostStore().putSolids(*coupling_);
+    }
+    if (wallsMove_ && wallTime_ != time_)
+    {
+        hostParticleStore store = hostStore();
+        moveWallsOn(store, time_);
     }
     // Only a finite state is worth writing.
     bool finite = true;

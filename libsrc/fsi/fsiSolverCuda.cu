@@ -214,6 +214,15 @@ struct cudaParticleStore
             c.devicePosition(), c.deviceMeanVelocity()});
     }
 
+    // The moving walls' moves by body: a few hundred bytes, copied on the
+    // default stream after the kernels that read the last ones.
+    deviceBuffer<bodyMove> moves;
+    const bodyMove* bodyMoves(const std::vector<bodyMove>& m)
+    {
+        upload(moves, m);
+        return moves.data();
+    }
+
     // The particles, the cell list and the solids into the host's arrays.
     void toHost()
     {

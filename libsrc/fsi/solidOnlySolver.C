@@ -75,6 +75,12 @@ solidOnlySolver::solidOnlySolver
     const vec3 g = readGravity(caseDir_, nDim_);
     solids_ = std::make_unique<solidBodySet>(caseDir_, startTimeName_, start,
                                              freshStart, g, log_);
+    motions_ = prescribedMotions(caseDir_, start, nDim_, false, log_);
+    if (freshStart)
+    {
+        motions_.placeSolids(*solids_, time_);
+    }
+    clampMotion_ = motions_.clampMotions(*solids_);
     stableDeltaT_ =
         std::min(double(solids_->stableDeltaT()), control_.maxDeltaT);
     deltaT_ = stableDeltaT_;
@@ -120,9 +126,16 @@ void solidOnlySolver::run()
     {
         // The same write times as the fluid loop.
         const scalar dt = schedule_->limitStep(time_, stableDeltaT_);
-        for (solidBody& b : solids_->bodies())
+        for (std::size_t b = 0; b < solids_->bodies().size(); ++b)
         {
-            b.solid->step(openmpExec{}, dt);
+            vcpmSolid& solid = *solids_->bodies()[b].solid;
+            vcpmSolidView v = solid.view();
+            if (const rigidMotion* m = clampMotion_[b])
+            {
+                v.clampMove = {1, m->transform(time_),
+                               m->transform(time_ + dt)};
+            }
+            vcpmStep(openmpExec{}, v, dt);
         }
         deltaT_ = dt;
         time_ += dt;

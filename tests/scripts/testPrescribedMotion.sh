@@ -1,0 +1,200 @@
+#!/bin/bash
+# Prescribed motions (constant/motion, docs/motion.md) in the solvers.
+#
+# 1. Still water in a 2D tank rotated slowly by 10 degrees about its
+#    bottom centre (a quarter period of 16 s, started with a 4 s ramp): in
+#    the lab frame the free surface stays horizontal, the levels 0.15 m
+#    either side of the axis within 1 dp of each other throughout (a
+#    surface that turned with the tank would differ by 0.3 tan 10 deg =
+#    5.3 dp) and at the still level; the tank's particles are where the
+#    rigid rotation puts them; no particle is lost.
+# 2. A clamped rubber strip (solids alone) turned rigidly by 90 degrees
+#    about its clamp in 1 s, then held, with damping: at rest it lies on
+#    the rigid rotation of its reference lattice and carries no stress
+#    (the bond forces follow the bonds' current direction exactly).
+# 3. Bad input: a 2D motion about an axis out of the plane, and a motion of
+#    a solid body with no clamped particle, each a clear error.
+source "$(dirname "$0")/testLib.sh"
+source "$(dirname "$0")/fieldTools.sh"
+
+# rotationError <case> <time> <body> <angle deg> <ox> <oy>: the largest
+# distance of the body's particles at <time> from R(angle) (X - o) + o,
+# X their positions in 0/ (matched by id).
+rotationError()
+{
+    # One table at a time: bodyTable's scratch files are per shell.
+    bodyTable "$1/0" "$3" position > "$scratch/.before"
+    bodyTable "$1/$2" "$3" position > "$scratch/.after"
+    paste -d ' ' "$scratch/.before" "$scratch/.after" |
+    awk -v a="$4" -v ox="$5" -v oy="$6" '
+        BEGIN { c = cos(a*atan2(0, -1)/180); s = sin(a*atan2(0, -1)/180) }
+        { if ($1 != $5) { bad = 1; exit }
+          x = ox + c*($2 - ox) - s*($3 - oy); y = oy + s*($2 - ox) + c*($3 - oy)
+          d = sqrt(($6 - x)^2 + ($7 - y)^2); if (d > m) m = d }
+        END { if (bad) print "ids differ"; else if (NR == 0) print "no particles";
+              else printf "%.3g\n", m + 0 }'
+}
+
+# 1. Still water in a slowly rotated tank
+c="$scratch/stillWater"
+mkdir -p "$c/system" "$c/constant"
+cat > "$c/system/generateParticlesDict" <<'DICT'
+nDimensions 2;
+dp          0.01;
+bodies
+{
+    tank  { type wall; container { min (0 0 0); max (0.4 0.3 0); layers 3; openTop yes; } }
+    water { type fluid; shapes { b { shape box; min (0 0 0); max (0.4 0.1 0); } } }
+}
+DICT
+cat > "$c/constant/motion" <<'DICT'
+roll
+{
+    bodies  (tank);
+    origin  (0.2 0 0);
+    axis    (0 0 1);
+    angle   { type sinusoid; amplitude 10; period 16; rampTime 4; units degrees; }
+}
+DICT
+cat > "$c/constant/fluidProperties" <<'DICT'
+rho0 1000; nu 1e-6; coefSound 10; gamma 7; turbulence off;
+DICT
+cat > "$c/constant/g" <<'DICT'
+dimensions [0 1 -2 0 0 0 0];
+value      (0 -9.81 0);
+DICT
+cat > "$c/system/sphSchemes" <<'DICT'
+kernel wendlandC2; hOverDp 1.5;
+densityDiffusion { type fourtakas; delta 0.1; }
+viscosity { type laminar; }
+shifting { type none; }
+boundary adami;
+DICT
+cat > "$c/system/controlDict" <<'DICT'
+application     sphVcpmFsi;
+startFrom       latestTime;
+startTime       0;
+stopAt          endTime;
+endTime         4;
+deltaT          1e-4;
+adjustTimeStep  yes;
+maxCo           0.2;
+maxDeltaT       1e-3;
+writeControl    adjustableRunTime;
+writeInterval   2;
+writeFormat     ascii;
+writePrecision  17;
+logInterval     5000;
+functions
+{
+    levels { type freeSurfaceGauges; writeControl runTime; writeInterval 0.05;
+             locations ((0.05 0 0) (0.35 0 0)); maxHeight 0.3; }
+}
+DICT
+generateParticles -case "$c" > "$scratch/log.genWater" 2>&1
+check "still water: generateParticles" [ $? -eq 0 ]
+sphVcpmFsi -case "$c" > "$scratch/log.water" 2>&1
+check "still water: sphVcpmFsi runs the rotating tank" [ $? -eq 0 ]
+log="$scratch/log.water"
+expectIn "still water: the log names the motion" "$log" "motion roll: rotation of tank"
+expectIn "still water: End" "$log" "^End"
+check "still water: no particle removed" bash -c "! grep -q Removed '$log'"
+err=$(rotationError "$c" 4 tank 10 0.2 0)
+check "still water: the tank is turned by 10 degrees at t = 4 s (max error $err m)" \
+    python3 -c "import sys; sys.exit(0 if float('${err// /_}') < 1e-9 else 1)" 2>/dev/null
+dat="$c/postProcessing/levels/0/height.dat"
+read h0 h1 <<< "$(awk '!/^#/ { a = $2; b = $3 } END { print a, b }' "$dat")"
+echo "    levels at t = 4 s: $h0 m (x = 0.05), $h1 m (x = 0.35)"
+check "still water: free surface horizontal in the lab frame (|h0 - h1| = $(python3 -c "print(abs($h0-$h1))") m < dp)" \
+    python3 -c "import sys; sys.exit(0 if abs($h0 - $h1) < 0.01 else 1)"
+worst=$(awk '!/^#/ { d = $2 - $3; if (d < 0) d = -d; if (d > m) m = d } END { print m + 0 }' "$dat")
+check "still water: levels within 1 dp of each other throughout (worst $worst m)" \
+    python3 -c "import sys; sys.exit(0 if $worst < 0.01 else 1)"
+check "still water: the level is the still level (h0 = $h0 m, 0.1 m at rest)" \
+    python3 -c "import sys; sys.exit(0 if abs(0.5*($h0 + $h1) - 0.1) < 0.01 else 1)"
+
+# 2. A clamped strip turned rigidly by 90 degrees
+c="$scratch/strip"
+mkdir -p "$c/system" "$c/constant"
+cat > "$c/system/generateParticlesDict" <<'DICT'
+nDimensions 2;
+dp          0.002;
+bodies
+{
+    strip
+    {
+        type    solid;
+        shapes { b { shape box; min (0 0 0); max (0.1 0.02 0); } }
+        clamp  { c { shape box; min (-1 -1 -1); max (0.004 1 1); } }
+    }
+}
+DICT
+cat > "$c/constant/solidProperties" <<'DICT'
+strip { rho 1000; E 1e6; nu 0.3; lattice square2D; plane planeStrain; damping 50; }
+DICT
+cat > "$c/constant/g" <<'DICT'
+dimensions [0 1 -2 0 0 0 0];
+value      (0 0 0);
+DICT
+# 0 -> 90 degrees in 1 s along t - sin(2 pi t)/(2 pi) (no jump in the
+# velocity at either end), held after.
+python3 -c "
+import math
+for i in range(101):
+    t = i/100
+    print(t, 90*(t - math.sin(2*math.pi*t)/(2*math.pi)))" > "$c/constant/turn.dat"
+cat > "$c/constant/motion" <<'DICT'
+turn
+{
+    bodies  (strip);
+    origin  (0.002 0.01 0);
+    axis    (0 0 1);
+    angle   { type table; file "constant/turn.dat"; units degrees; }
+}
+DICT
+cat > "$c/system/controlDict" <<'DICT'
+application     sphVcpmFsi;
+startFrom       latestTime;
+startTime       0;
+stopAt          endTime;
+endTime         2;
+deltaT          1e-5;
+writeControl    adjustableRunTime;
+writeInterval   1;
+writeFormat     ascii;
+writePrecision  17;
+logInterval     100000;
+DICT
+generateParticles -case "$c" > "$scratch/log.genStrip" 2>&1
+check "strip: generateParticles" [ $? -eq 0 ]
+sphVcpmFsi -case "$c" > "$scratch/log.strip" 2>&1
+check "strip: sphVcpmFsi runs the turning strip" [ $? -eq 0 ]
+expectIn "strip: End" "$scratch/log.strip" "^End"
+err=$(rotationError "$c" 2 strip 90 0.002 0.01)
+check "strip: at rest on the rigid rotation by 90 degrees (max error $err m)" \
+    python3 -c "import sys; sys.exit(0 if float('${err// /_}') < 1e-8 else 1)" 2>/dev/null
+vm=$(fieldValues "$c/2/strip/vonMises" | awk '{ v = $1 < 0 ? -$1 : $1; if (v > m) m = v } END { printf "%.3g\n", m + 0 }')
+check "strip: unstrained after the turn (max von Mises $vm Pa, E = 1 MPa)" \
+    python3 -c "import sys; sys.exit(0 if $vm < 1e-2 else 1)"
+
+# 3. Bad input
+bad="$scratch/badAxis"
+cp -r "$scratch/stillWater" "$bad"
+rm -rf "$bad"/[1-9]* "$bad/postProcessing"
+sed -i 's/axis    (0 0 1);/axis    (1 0 0);/' "$bad/constant/motion"
+sphVcpmFsi -case "$bad" > "$scratch/log.badAxis" 2>&1
+check "2D axis out of the plane: non-zero exit" [ $? -ne 0 ]
+expectIn "2D axis out of the plane: says what is allowed" \
+    "$scratch/log.badAxis" "Motion roll of a 2D case: its axis must be \(0 0 1\)"
+expectIn "2D axis out of the plane: names the file and the line" \
+    "$scratch/log.badAxis" "constant/motion at line 3"
+bad="$scratch/badBody"
+cp -r "$scratch/strip" "$bad"
+rm -rf "$bad"/[1-9]*
+sed -i 's/clamp  { c { shape box; min (-1 -1 -1); max (0.004 1 1); } }//' "$bad/system/generateParticlesDict"
+generateParticles -case "$bad" > /dev/null 2>&1
+sphVcpmFsi -case "$bad" > "$scratch/log.badBody" 2>&1
+check "motion of an unclamped solid: non-zero exit" [ $? -ne 0 ]
+expectIn "motion of an unclamped solid: names the body and what can move" \
+    "$scratch/log.badBody" "strip is not a solid body with clamped particles"
+finish
