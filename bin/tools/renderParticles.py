@@ -338,7 +338,8 @@ def lookupTable(name, presets, lo, hi, skip=0.0):
              for i in range(0, len(lut.RGBPoints), 4)]
         i = next(i for i in range(1, len(p)) if p[i][0] > skip)
         f = (skip - p[i - 1][0])/(p[i][0] - p[i - 1][0])
-        first = [skip] + [a + f*(b - a) for a, b in zip(p[i - 1][1:], p[i][1:])]
+        first = [skip] + [a + f*(b - a)
+                          for a, b in zip(p[i - 1][1:], p[i][1:])]
         lut.RGBPoints = [v for q in [first] + p[i:]
                          for v in [(q[0] - skip)/(1 - skip)] + q[1:]]
     lut.RescaleTransferFunction(lo, hi)
@@ -430,7 +431,8 @@ def main():
     bounds = [math.inf, -math.inf]*3
     uMax = sMax = 0.0
     fluids = [b for b in bodies if b.type == "fluid" and "U" in b.arrays]
-    solids = [b for b in bodies if b.type == "solid" and "vonMises" in b.arrays]
+    solids = [b for b in bodies
+              if b.type == "solid" and "vonMises" in b.arrays]
     for t in sorted(set(rendered) | {allTimes[0]}):
         for b in bodies:
             b.reader.UpdatePipeline(t)
