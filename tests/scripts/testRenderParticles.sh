@@ -1,0 +1,152 @@
+#!/bin/bash
+# bin/tools/renderParticles on two small cases: the 2D elastic gate run for
+# 4 ms at dp = 2 mm (water, tank, gate; snapshots, snapping of -times,
+# animation frames) and writeParticleCase's 3D case with its time
+# directories removed (body types then told by the fields, dp estimated;
+# iso view, -output). The PNGs must have the asked size and show the
+# particles: colours of the fluid's and the walls' maps, not only white.
+# Also the errors (no VTK/, bad options) and the exit 0 without pvbatch.
+# Without ParaView, or where it cannot render, skipped (exit 77) after the
+# checks that need no ParaView.
+. "$(dirname "$0")/testLib.sh"
+
+render="$SPHVCPM_DIR/bin/tools/renderParticles"
+
+# Errors, and no pvbatch: exit 0 with a message (tutorials go on).
+mkdir -p "$scratch/empty"
+"$render" -case "$scratch/empty" > "$scratch/log.noVtk" 2>&1
+check "no VTK/: exit 1" [ $? -eq 1 ]
+expectIn "no VTK/: says to run particlesToVTK" "$scratch/log.noVtk" \
+    "no VTK/\*\.vtp\.series in .*: run particlesToVTK first"
+"$render" -view side > "$scratch/log.badView" 2>&1
+check "-view side: exit 1" [ $? -eq 1 ]
+"$render" -bogus > "$scratch/log.bogus" 2>&1
+check "unknown option: exit 1" [ $? -eq 1 ]
+expectIn "unknown option named" "$scratch/log.bogus" "unknown option '-bogus'"
+mkdir -p "$scratch/empty/VTK" "$scratch/noPv"
+touch "$scratch/empty/VTK/water.vtp.series"
+for tool in bash dirname ls sed grep; do
+    ln -s "$(command -v $tool)" "$scratch/noPv/$tool"
+done
+PATH="$scratch/noPv" "$render" -case "$scratch/empty" > "$scratch/log.noPv" 2>&1
+check "no pvbatch: exit 0" [ $? -eq 0 ]
+expectIn "no pvbatch: says so" "$scratch/log.noPv" "pvbatch \(ParaView\) not found"
+
+if ! command -v pvbatch > /dev/null; then
+    echo "pvbatch not found: rendering checks skipped"
+    finish || exit 1
+    exit 77
+fi
+
+# pngInfo file: "width height white grey colours": the shares of white and
+# of mid-grey (walls) pixels, the number of colours (a PNG decoder
+# of the standard library: 8-bit RGB or RGBA, as ParaView writes them).
+pngInfo()
+{
+    python3 - "$1" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n"
+pos, idat = 8, b""
+while pos < len(data):
+    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    if kind == b"IHDR":
+        w, h, depth, ctype = struct.unpack(">IIBB", data[pos + 8:pos + 18])
+    if kind == b"IDAT":
+        idat += data[pos + 8:pos + 8 + n]
+    pos += 12 + n
+bpp = {2: 3, 6: 4}[ctype]
+raw, stride = zlib.decompress(idat), w*bpp
+prev, colours, white, grey = bytearray(stride), set(), 0, 0
+for y in range(h):
+    f, line = raw[y*(stride + 1)], bytearray(raw[y*(stride + 1) + 1:(y + 1)*(stride + 1)])
+    for i in range(stride):
+        a = line[i - bpp] if i >= bpp else 0
+        b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+        if f == 1: line[i] = (line[i] + a) & 255
+        elif f == 2: line[i] = (line[i] + b) & 255
+        elif f == 3: line[i] = (line[i] + (a + b)//2) & 255
+        elif f == 4:
+            p = a + b - c
+            pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+            line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+    for i in range(0, stride, bpp):
+        rgb = bytes(line[i:i + 3])
+        colours.add(rgb)
+        white += rgb == b"\xff\xff\xff"
+        grey += rgb[0] == rgb[1] == rgb[2] and 60 <= rgb[0] <= 235
+    prev = line
+print(w, h, "%.3f %.3f" % (white/(w*h), grey/(w*h)), len(colours))
+PY
+}
+
+# checkPng what file width height: the size, not blank, walls' grey (1 %
+# of the pixels at least; text alone makes 0.1 %), many colours.
+checkPng()
+{
+    local info
+    if [ ! -s "$2" ]; then fail "$1: $2 written"; return; fi
+    info=$(pngInfo "$2")
+    read -r w h white grey colours <<< "$info"
+    check "$1: ${3}x$4 (got ${w}x$h)" [ "$w" = "$3" -a "$h" = "$4" ]
+    check "$1: particles and walls drawn (white $white, grey $grey, $colours colours)" \
+        awk -v w="$white" -v g="$grey" -v c="$colours" \
+        'BEGIN { exit !(w < 0.97 && g > 0.01 && c > 100) }'
+}
+
+# 2D: the elastic gate, 4 ms.
+gate="$scratch/gate2D"
+cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreakElasticGate2D" "$gate"
+sed -i "s/^dp .*/dp 0.002;/" "$gate/system/generateParticlesDict"
+sed -i "s/^endTime .*/endTime 0.004;/; s/^writeInterval .*/writeInterval 0.002;/" \
+    "$gate/system/controlDict"
+(cd "$gate" && generateParticles > log.generateParticles 2>&1 \
+    && sphVcpmFsi > log.sphVcpmFsi 2>&1 && particlesToVTK > log.particlesToVTK 2>&1)
+check "gate2D: run and converted" [ -s "$gate/VTK/gate.vtp.series" ]
+
+log="$scratch/log.render2D"
+(cd "$gate" && "$render" -times "0 0.0035" -animate 2 -view iso -size 480x320) \
+    > "$log" 2>&1
+status=$?
+cat "$log"
+if grep -q "cannot render here" "$log"; then
+    echo "Skipped: $(grep 'cannot render here' "$log")"
+    finish || exit 1
+    exit 77
+fi
+check "2D: exit 0" [ $status -eq 0 ]
+expectIn "2D: 0.0035 snaps to 0.004" "$log" "time 0\.0035 -> written time 0\.004"
+expectIn "2D: front view whatever -view says" "$log" "2D case: front view"
+expectIn "2D: range of |U| printed" "$log" "colour range of \|U\| \[m/s\]: 0 to [0-9.e+-]+$"
+expectIn "2D: range of von Mises printed" "$log" "colour range of von Mises \[Pa\]: 0 to [0-9.e+-]+$"
+checkPng "2D t = 0" "$gate/images/gate2D_t0.png" 480 320
+checkPng "2D t = 0.004" "$gate/images/gate2D_t0.004.png" 480 320
+differ() { ! cmp -s "$1" "$2"; }
+check "2D: the two times differ" differ "$gate/images/gate2D_t0.png" \
+    "$gate/images/gate2D_t0.004.png"
+check "2D: animation frames 0 and 1, no more" [ -s "$gate/images/animation/frame_0000.png" \
+    -a -s "$gate/images/animation/frame_0001.png" \
+    -a ! -e "$gate/images/animation/frame_0002.png" ]
+
+# 3D without time directories: fields and nearest neighbours tell.
+helper="${SPHVCPM_TESTBIN:-$SPHVCPM_DIR/platforms/tests}/writeParticleCase"
+if [ -x "$helper" ]; then
+    c3="$scratch/sheet3D"
+    mkdir -p "$c3"
+    "$helper" -case "$c3" -times '(0 0.1)' -nDimensions 3 -nx 4 -ny 2 > "$scratch/log.helper" 2>&1
+    particlesToVTK -case "$c3" > "$scratch/log.p2v3D" 2>&1
+    rm -rf "$c3"/0 "$c3"/0.1
+    log="$scratch/log.render3D"
+    "$render" -case "$c3" -size 400x300 -output pictures > "$log" 2>&1
+    status=$?
+    cat "$log"
+    check "3D: exit 0" [ $status -eq 0 ]
+    expectIn "3D: the latest time without -times" "$log" "no -times: the latest time, 0\.1$"
+    expectIn "3D: dp estimated" "$log" \
+        "water: no bodyProperties, dp estimated as 0\.01$"
+    checkPng "3D iso view" "$c3/pictures/sheet3D_t0.1.png" 400 300
+else
+    fail "test helper $helper not built"
+fi
+
+finish
