@@ -97,7 +97,13 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     }
     log_<< ", turbulence " << (model_.sps ? "SPS" : "off") << "\n"
         << "    shifting " << shiftingName(model_.shifting)
-        << ", walls: Adami extrapolated pressure\n"
+        << ", walls: Adami extrapolated pressure\n";
+    if (coupling_ && hasWalls_)
+    {
+        log_<< "    solid-wall contact: penalty at (dp + dp_s)/2, omega = c0/h"
+            << " = " << model_.c0/model_.h << " 1/s\n";
+    }
+    log_
         << "    g = " << str(model_.g) << "\n"
         << "    domain " << str(grid_.origin) << " "
         << grid_.nx << " x " << grid_.ny << " x " << grid_.nz
@@ -336,6 +342,7 @@ void fsiSolver::readStartTime()
 
 void fsiSolver::placeMovingWalls()
 {
+    for (const bodyInfo& b : bodies_) hasWalls_ |= b.type == bodyType::wall;
     wallMoves_.assign(bodies_.size(), bodyMove::none());
     wallTime_ = time_;
     for (std::size_t b = 0; b < bodies_.size(); ++b)
