@@ -17,6 +17,9 @@ expectedCount()
         hydrostaticTank3D/tank)  echo $((21*21*18 - 15*15*15)) ;;
         damBreak3D/water)        echo $((40*67*30)) ;;
         damBreak3D/tank)         echo $((166*73*43 - 160*67*40)) ;;
+        sluiceGate3D/water)      echo $((24*8*20)) ;;
+        sluiceGate3D/gate)       echo $((6*16*56)) ;;                     # dp/2: 6 layers
+        sluiceGate3D/flume)      echo $((74*14*35 - 68*8*32 + 3*14*16 + 2*24*3*16)) ;;  # + raised end
         *) echo "" ;;
     esac
 }
