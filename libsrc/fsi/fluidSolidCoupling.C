@@ -69,9 +69,8 @@ bodyMove fluidSolidCoupling::clampMoveOf(const std::size_t b, const double t,
     const
 {
     const rigidMotion* m = b < clampMotion_.size() ? clampMotion_[b] : nullptr;
-    if (!m) return bodyMove::none();
-    return {1, m->transform(t + k*double(subDt)),
-            m->transform(t + (k + 1)*double(subDt))};
+    return m ? m->move(t + k*double(subDt), t + (k + 1)*double(subDt))
+             : bodyMove::none();
 }
 
 

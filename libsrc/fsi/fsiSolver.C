@@ -285,6 +285,7 @@ void fsiSolver::readStartTime()
     {
         const particleBody& body = bodies[b];
         bodies_.push_back({body.name(), body.type(), body.dp(), 0});
+        hasWalls_ |= body.type() == bodyType::wall;
         const label n = body.size();
         const auto& x = body.position();
         const auto& ids = body.id();
@@ -342,7 +343,6 @@ void fsiSolver::readStartTime()
 
 void fsiSolver::placeMovingWalls()
 {
-    for (const bodyInfo& b : bodies_) hasWalls_ |= b.type == bodyType::wall;
     wallMoves_.assign(bodies_.size(), bodyMove::none());
     wallTime_ = time_;
     for (std::size_t b = 0; b < bodies_.size(); ++b)
@@ -461,16 +461,17 @@ void fsiSolver::setDomain()
     {
         // Bounding box of all particles with a margin; against gravity the
         // box doubles, so that splashes are not lost.
-        lo = vec3{vGreat, vGreat, vGreat};
-        hi = -lo;
-        for (const vec3& x : particles_.position)
+        const auto grow = [](vec3& l, vec3& h, const vec3& x)
         {
             for (int d = 0; d < 3; ++d)
             {
-                lo[d] = std::min(lo[d], x[d]);
-                hi[d] = std::max(hi[d], x[d]);
+                l[d] = std::min(l[d], x[d]);
+                h[d] = std::max(h[d], x[d]);
             }
-        }
+        };
+        lo = vec3{vGreat, vGreat, vGreat};
+        hi = -lo;
+        for (const vec3& x : particles_.position) grow(lo, hi, x);
         // Moving bodies: their box wherever their motion takes them up to
         // endTime (the box's corners moved, sampled in time).
         for (std::size_t b = 0; b < bodies_.size(); ++b)
@@ -480,11 +481,7 @@ void fsiSolver::setDomain()
             for (label i = 0; i < particles_.size(); ++i)
             {
                 if (particles_.body[i] != b) continue;
-                for (int d = 0; d < 3; ++d)
-                {
-                    blo[d] = std::min(blo[d], particles_.position[i][d]);
-                    bhi[d] = std::max(bhi[d], particles_.position[i][d]);
-                }
+                grow(blo, bhi, particles_.position[i]);
             }
             const int nSamples = 2000;
             for (int k = 0; k <= nSamples; ++k)
@@ -496,12 +493,7 @@ void fsiSolver::setDomain()
                 {
                     const vec3 corner{c & 1 ? bhi.x : blo.x,
                         c & 2 ? bhi.y : blo.y, c & 4 ? bhi.z : blo.z};
-                    const vec3 x = m.moved(corner);
-                    for (int d = 0; d < 3; ++d)
-                    {
-                        lo[d] = std::min(lo[d], x[d]);
-                        hi[d] = std::max(hi[d], x[d]);
-                    }
+                    grow(lo, hi, m.moved(corner));
                 }
             }
         }

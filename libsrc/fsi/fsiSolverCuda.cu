@@ -10,6 +10,8 @@
 #include "fsiSolverSteps.H"
 #include "parallelCuda.cuh"
 
+#include <cstring>
+
 namespace sphvcpm
 {
 
@@ -215,11 +217,19 @@ struct cudaParticleStore
     }
 
     // The moving walls' moves by body: a few hundred bytes, copied on the
-    // default stream after the kernels that read the last ones.
+    // default stream after the kernels that read the last ones, and only
+    // when they changed (the wall pass after a move reads the same ones; a
+    // copy from the host waits for the GPU).
     deviceBuffer<bodyMove> moves;
+    std::vector<bodyMove> movesOnDevice;
     const bodyMove* bodyMoves(const std::vector<bodyMove>& m)
     {
-        upload(moves, m);
+        if (m.size() != movesOnDevice.size() || std::memcmp(m.data(),
+                movesOnDevice.data(), m.size()*sizeof(bodyMove)) != 0)
+        {
+            upload(moves, m);
+            movesOnDevice = m;
+        }
         return moves.data();
     }
 

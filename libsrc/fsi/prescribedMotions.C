@@ -27,7 +27,6 @@ prescribedMotions::prescribedMotions
     std::vector<std::string> allowed;
     for (const particleBody& b : bodies)
     {
-        names_.push_back(b.name());
         bool clamps = false;
         if (b.type() == bodyType::solid && b.hasField("clamped"))
         {
@@ -65,9 +64,9 @@ prescribedMotions::prescribedMotions
         for (const std::string& b : m.bodies) log << " " << b;
         log << "\n";
     }
-    for (const std::string& name : names_)
+    for (const particleBody& b : bodies)
     {
-        byBody_.push_back(set_.motionOf(name));
+        byBody_.push_back(set_.motionOf(b.name()));
     }
 }
 
@@ -76,8 +75,7 @@ bodyMove prescribedMotions::move(const std::size_t b, const double t0,
                                  const double t1) const
 {
     const rigidMotion* m = of(b);
-    if (!m) return bodyMove::none();
-    return {1, m->transform(t0), m->transform(t1)};
+    return m ? m->move(t0, t1) : bodyMove::none();
 }
 
 

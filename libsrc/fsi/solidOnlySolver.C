@@ -132,8 +132,7 @@ void solidOnlySolver::run()
             vcpmSolidView v = solid.view();
             if (const rigidMotion* m = clampMotion_[b])
             {
-                v.clampMove = {1, m->transform(time_),
-                               m->transform(time_ + dt)};
+                v.clampMove = m->move(time_, time_ + dt);
             }
             vcpmStep(openmpExec{}, v, dt);
         }
