@@ -36,20 +36,8 @@ DICT
     cat > "$c/constant/solidProperties" <<DICT
 block { rho 1100; E 2e6; nu 0.3; lattice $lattice; }
 DICT
-    cat > "$c/constant/fluidProperties" <<'DICT'
-rho0 1000; nu 1e-6; c0 40; gamma 7; turbulence off;
-DICT
-    cat > "$c/constant/g" <<'DICT'
-dimensions [0 1 -2 0 0 0 0];
-value      (0 0 0);
-DICT
-    cat > "$c/system/sphSchemes" <<'DICT'
-kernel wendlandC2; hOverDp 1.5;
-densityDiffusion { type fourtakas; delta 0.1; }
-viscosity { type laminar; }
-shifting { type none; }
-boundary adami;
-DICT
+    writeWaterModel "$c" "c0 40;"
+    writeGravity "$c" "(0 0 0)"
     cat > "$c/system/controlDict" <<'DICT'
 application     sphVcpmFsi;
 startFrom       latestTime;

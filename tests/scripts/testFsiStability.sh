@@ -44,20 +44,8 @@ DICT
     cat > "$c/constant/solidProperties" <<DICT
 plate { rho $rho; E $E; nu $nu; lattice square2D; plane planeStrain; }
 DICT
-    cat > "$c/constant/fluidProperties" <<DICT
-rho0 1000; nu 1e-6; $sound gamma 7; turbulence off;
-DICT
-    cat > "$c/constant/g" <<DICT
-dimensions [0 1 -2 0 0 0 0];
-value $g;
-DICT
-    cat > "$c/system/sphSchemes" <<'DICT'
-kernel wendlandC2; hOverDp 1.5;
-densityDiffusion { type fourtakas; delta 0.1; }
-viscosity { type laminar; }
-shifting { type none; }
-boundary adami;
-DICT
+    writeWaterModel "$c" "$sound"
+    writeGravity "$c" "$g"
     cat > "$c/system/controlDict" <<'DICT'
 application sphVcpmFsi; startFrom latestTime; startTime 0; stopAt endTime;
 endTime 1; deltaT 1e-5; adjustTimeStep yes; maxCo 0.2; maxDeltaT 1e-3;

@@ -59,3 +59,28 @@ skipWithoutGpu()
         exit 77
     fi
 }
+
+# Case dictionaries the solver tests share.
+# writeGravity <case> "<vector>": constant/g
+writeGravity()
+{
+    mkdir -p "$1/constant"
+    printf 'dimensions [0 1 -2 0 0 0 0];\nvalue      %s;\n' "$2" > "$1/constant/g"
+}
+
+# writeWaterModel <case> "<c0 or coefSound entry>": water in
+# constant/fluidProperties and the default schemes (Wendland C2, h = 1.5
+# dp, Fourtakas diffusion, laminar viscosity, Adami walls) in
+# system/sphSchemes.
+writeWaterModel()
+{
+    mkdir -p "$1/constant" "$1/system"
+    echo "rho0 1000; nu 1e-6; $2 gamma 7; turbulence off;" > "$1/constant/fluidProperties"
+    cat > "$1/system/sphSchemes" <<'DICT'
+kernel wendlandC2; hOverDp 1.5;
+densityDiffusion { type fourtakas; delta 0.1; }
+viscosity { type laminar; }
+shifting { type none; }
+boundary adami;
+DICT
+}

@@ -56,20 +56,8 @@ roll
     angle   { type sinusoid; amplitude 10; period 16; rampTime 4; units degrees; }
 }
 DICT
-cat > "$c/constant/fluidProperties" <<'DICT'
-rho0 1000; nu 1e-6; coefSound 10; gamma 7; turbulence off;
-DICT
-cat > "$c/constant/g" <<'DICT'
-dimensions [0 1 -2 0 0 0 0];
-value      (0 -9.81 0);
-DICT
-cat > "$c/system/sphSchemes" <<'DICT'
-kernel wendlandC2; hOverDp 1.5;
-densityDiffusion { type fourtakas; delta 0.1; }
-viscosity { type laminar; }
-shifting { type none; }
-boundary adami;
-DICT
+writeWaterModel "$c" "coefSound 10;"
+writeGravity "$c" "(0 -9.81 0)"
 cat > "$c/system/controlDict" <<'DICT'
 application     sphVcpmFsi;
 startFrom       latestTime;
@@ -132,10 +120,7 @@ DICT
 cat > "$c/constant/solidProperties" <<'DICT'
 strip { rho 1000; E 1e6; nu 0.3; lattice square2D; plane planeStrain; damping 50; }
 DICT
-cat > "$c/constant/g" <<'DICT'
-dimensions [0 1 -2 0 0 0 0];
-value      (0 0 0);
-DICT
+writeGravity "$c" "(0 0 0)"
 # 0 -> 90 degrees in 1 s along t - sin(2 pi t)/(2 pi) (no jump in the
 # velocity at either end), held after.
 python3 -c "

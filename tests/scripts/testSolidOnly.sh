@@ -28,10 +28,7 @@ DICT
 cat > "$c/constant/solidProperties" <<'DICT'
 beam { rho 1000; E 1e8; nu 0.3; lattice square2D; plane planeStrain; damping 60; }
 DICT
-cat > "$c/constant/g" <<'DICT'
-dimensions [0 1 -2 0 0 0 0];
-value      (0 -9.81 0);
-DICT
+writeGravity "$c" "(0 -9.81 0)"
 cat > "$c/system/controlDict" <<'DICT'
 application     sphVcpmFsi;
 startFrom       latestTime;

@@ -24,16 +24,7 @@ DICT
 cat > "$c/constant/solidProperties" <<'DICT'
 block { rho 1100; E 1e6; nu 0.3; lattice square2D; plane planeStrain; damping 20; }
 DICT
-cat > "$c/constant/fluidProperties" <<'DICT'
-rho0 1000; nu 1e-6; coefSound 20; gamma 7; turbulence off;
-DICT
-cat > "$c/system/sphSchemes" <<'DICT'
-kernel wendlandC2; hOverDp 1.5;
-densityDiffusion { type fourtakas; delta 0.1; }
-viscosity { type laminar; }
-shifting { type none; }
-boundary adami;
-DICT
+writeWaterModel "$c" "coefSound 20;"
 cat > "$c/system/controlDict" <<'DICT'
 application     sphVcpmFsi;
 startFrom       latestTime;
