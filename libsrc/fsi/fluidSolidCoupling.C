@@ -88,6 +88,7 @@ label fluidSolidCoupling::advance(const double t, const scalar dt,
                   force.begin() + offsets_[b + 1], s.externalForce.begin());
         s.computeForces(openmpExec{});
         vcpmSolidView v = s.view();
+        v.contact = contact.empty() ? nullptr : contact.data() + offsets_[b];
         for (label k = 0; k < n; ++k)
         {
             v.clampMove = clampMoveOf(b, t, k, subDt);
@@ -178,6 +179,8 @@ void fluidSolidCoupling::useDevice()
     fatalError("no CUDA backend in this build");
 }
 vec3* fluidSolidCoupling::deviceFluidForce() { return nullptr; }
+contactPlane* fluidSolidCoupling::deviceContact() { return nullptr; }
+bool fluidSolidCoupling::collapsedOnDevice(scalar) const { return false; }
 const vec3* fluidSolidCoupling::devicePosition() const { return nullptr; }
 const vec3* fluidSolidCoupling::deviceMeanVelocity() const { return nullptr; }
 bool fluidSolidCoupling::nonFiniteOnDevice() const { return false; }

@@ -95,6 +95,7 @@ struct deviceSolids
     deviceBuffer<vec3> fluidForce, fluidForceAtStart, heldForce;
     deviceBuffer<vec3> meanVelocity, halfStart;
     deviceBuffer<vec3> startPosition, startVelocity, startMeanVelocity;
+    deviceBuffer<contactPlane> contact;          // empty without contact
 };
 
 
@@ -138,12 +139,19 @@ void fluidSolidCoupling::useDevice()
     d.startPosition = deviceBuffer<vec3>(n);
     d.startVelocity = deviceBuffer<vec3>(n);
     d.startMeanVelocity = deviceBuffer<vec3>(n);
+    if (!contact.empty()) d.contact = uploaded(contact);
 }
 
 
 vec3* fluidSolidCoupling::deviceFluidForce()
 {
     return device_->fluidForce.data();
+}
+
+
+contactPlane* fluidSolidCoupling::deviceContact()
+{
+    return contact.empty() ? nullptr : device_->contact.data();
 }
 
 
@@ -197,7 +205,8 @@ label fluidSolidCoupling::advanceOnDevice(const double t, const scalar dt,
             s.material().mass, s.gravity, s.damping, d.position.data() + o,
             d.velocity.data() + o, d.force.data() + o, held + o,
             d.clamped.data() + o, d.clampVelocity.data() + o,
-            d.stretchSum.data() + 2*o, bodyMove::none()};
+            d.stretchSum.data() + 2*o, bodyMove::none(),
+            contact.empty() ? nullptr : d.contact.data() + o};
         const label n = subSteps(b, dt);
         const scalar subDt = dt/n;
         vcpmComputeForces(cudaExec{}, v);
@@ -219,6 +228,22 @@ bool fluidSolidCoupling::nonFiniteOnDevice() const
     const label n = size();
     return parallelReduce(cudaExec{}, n,
         firstNonFiniteOp{device_->position.data(), n}, n, minOp()) < n;
+}
+
+
+bool fluidSolidCoupling::collapsedOnDevice(const scalar fraction) const
+{
+    for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
+    {
+        const bondView bonds = device_->bonds[b].view();
+        if (parallelReduce(cudaExec{}, bonds.nBonds, collapsedBondOp{bonds,
+                device_->position.data() + offsets_[b], fraction},
+                bonds.nBonds, minOp()) < bonds.nBonds)
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 

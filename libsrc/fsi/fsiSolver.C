@@ -100,8 +100,14 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         << ", walls: Adami extrapolated pressure\n";
     if (coupling_ && hasWalls_)
     {
-        log_<< "    solid-wall contact: penalty at (dp + dp_s)/2, omega = c0/h"
-            << " = " << model_.c0/model_.h << " 1/s\n";
+        withKernel(model_, [&](auto kernel)
+        {
+            contactProfile_ =
+                makeWallContactProfile(kernel, model_.nDimensions,
+                    model_.dp);
+        });
+        log_<< "    solid-wall contact: hard, at a gap of dp_s/2 to the walls'"
+            << " smoothed surface\n";
     }
     log_
         << "    g = " << str(model_.g) << "\n"
@@ -335,6 +341,7 @@ void fsiSolver::readStartTime()
         log_<< "    " << body.name() << " (" << bodyTypeName(body.type())
             << "): " << n << " particles\n";
     }
+    if (coupling_ && hasWalls_) coupling_->useContact();
     log_<< "    dp = " << dp << " m, " << nDim << "D, time = " << time_
         << "\n" << std::endl;
     placeMovingWalls();

@@ -210,6 +210,11 @@ struct cudaParticleStore
             c.deviceFluidForce()});
     }
 
+    contactPlane* contactPlanes(fluidSolidCoupling& c)
+    {
+        return c.deviceContact();
+    }
+
     void putSolids(const fluidSolidCoupling& c)
     {
         parallelFor(cudaExec{}, n, solidToParticlesOp{view(),

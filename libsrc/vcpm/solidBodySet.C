@@ -5,6 +5,7 @@
 #include "dictionary.H"
 #include "dimensionSet.H"
 #include "error.H"
+#include "parallel.H"
 #include "timeDirectory.H"
 
 #include <algorithm>
@@ -223,6 +224,36 @@ std::string solidBodySet::firstNonFinite() const
                << b.solid->reference()[i].z << "))";
             return os.str();
         }
+    }
+    return {};
+}
+
+
+std::string solidBodySet::firstCollapsed(const scalar fraction,
+                                         label* flatIndex) const
+{
+    label offset = 0;
+    for (const solidBody& b : bodies_)
+    {
+        const bondView bonds = b.solid->bonds().view();
+        const std::vector<vec3>& x = b.solid->position;
+        const label k = parallelReduce(openmpExec{}, bonds.nBonds,
+            collapsedBondOp{bonds, x.data(), fraction}, bonds.nBonds,
+            minOp());
+        if (k == bonds.nBonds)
+        {
+            offset += label(x.size());
+            continue;
+        }
+        const label i = bonds.first[k], j = bonds.second[k];
+        if (flatIndex) *flatIndex = offset + i;
+        std::ostringstream os;
+        os << "solid " << b.name << ": the bond of particles id " << b.id[i]
+           << " at (" << x[i].x << " " << x[i].y << " " << x[i].z
+           << ") and id " << b.id[j] << " at (" << x[j].x << " " << x[j].y
+           << " " << x[j].z << ") is " << mag(x[j] - x[i])/bonds.length[k]
+           << " of its rest length " << bonds.length[k] << " m";
+        return os.str();
     }
     return {};
 }

@@ -1,13 +1,15 @@
 #!/bin/bash
 # The solver's script tests again with SPHVCPM_DEVICE=cuda: bad input and
 # blow-up diagnoses, particles leaving the domain, restart, the stability
-# suites and the coupling, each on the GPU with its own checks and
-# tolerances. Skipped (77) where no GPU can be used.
+# suites, the coupling, prescribed motions and the solid-wall contact,
+# each on the GPU with its own checks and tolerances. Skipped (77) where
+# no GPU can be used.
 . "$(dirname "$0")/testLib.sh"
 
 skipWithoutGpu "running the script tests on the GPU"
 
-for test in testSolverInput testRestart testStability testFsiStability testFsiCoupling; do
+for test in testSolverInput testRestart testStability testFsiStability testFsiCoupling \
+    testPrescribedMotion testSolidWallContact; do
     SPHVCPM_DEVICE=cuda bash "$(dirname "$0")/$test.sh" > "$scratch/$test.log" 2>&1
     status=$?
     summary=$(tail -1 "$scratch/$test.log")

@@ -46,7 +46,7 @@ check "generateParticles" [ $? -eq 0 ]
 sphVcpmFsi -case "$c" > "$scratch/log.run" 2>&1
 check "sphVcpmFsi runs the drop to 0.8 s" [ $? -eq 0 ]
 log="$scratch/log.run"
-expectIn "the log describes the contact" "$log" "solid-wall contact: penalty at \(dp \+ dp_s\)/2"
+expectIn "the log describes the contact" "$log" "solid-wall contact: hard, at a gap of dp_s/2"
 expectIn "End" "$log" "^End"
 # The floor's top wall row is at y = -dp/2; d0 = (0.01 + 0.005)/2.
 read lowest vy <<< "$(paste -d ' ' <(fieldValues "$c/0.8/block/position") <(fieldValues "$c/0.8/block/U") |
