@@ -100,12 +100,6 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         << ", walls: Adami extrapolated pressure\n";
     if (coupling_ && hasWalls_)
     {
-        withKernel(model_, [&](auto kernel)
-        {
-            contactProfile_ =
-                makeWallContactProfile(kernel, model_.nDimensions,
-                    model_.dp);
-        });
         log_<< "    solid-wall contact: hard, at a gap of dp_s/2 to the walls'"
             << " smoothed surface\n";
     }

@@ -1,12 +1,11 @@
 /*---------------------------------------------------------------------------*\
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
-// The solid-wall contact (solidWallContact.H, docs/fsi.md): the half-space
-// profile of the walls' volume fraction against its definition and against
-// lattice sums over a flat wall; the contact plane of single solid
-// particles, among them one on the outer wall row between two wall
-// particles, where a pairwise contact's pushes cancel; the sub-step's stop
-// at a plane.
+// The solid-wall contact (solidWallContact.H, docs/fsi.md): the contact
+// plane of single solid particles over a flat wall, also on the outer wall
+// row between two wall particles, where a pairwise contact's pushes cancel,
+// and next to a side wall in an inner corner, where the floor must not
+// count; the sub-step's stop at a plane.
 
 #include "cellList.H"
 #include "parallel.H"
@@ -27,89 +26,37 @@ using namespace sphvcpm;
 namespace
 {
 
-// The walls' volume fraction at height s above the outer row (y = 0) of
-// a flat wall of spacing 1 whose rows go down past the support, with the
-// point shifted by `along` from a column of wall particles.
-template<class Kernel>
-scalar flatWallFraction(const Kernel& k, const int nDim, const scalar s,
-                        const scalar along)
-{
-    const int reach = int(std::ceil(k.support())) + 1;
-    scalar phi = 0;
-    for (int row = 0; row <= reach; ++row)
-    {
-        for (int a = -reach; a <= reach; ++a)
-        {
-            for (int b = (nDim == 3 ? -reach : 0);
-                 b <= (nDim == 3 ? reach : 0); ++b)
-            {
-                const scalar x = a - along, z = b - (nDim == 3 ? along : 0);
-                phi += k.W(std::sqrt(x*x + z*z + (s + row)*(s + row)));
-            }
-        }
-    }
-    return phi;
-}
-
-template<class Kernel>
-void checkProfile(const std::string& name)
-{
-    for (const int nDim : {2, 3})
-    {
-        for (const scalar hOverDp : {1.3, 1.5, 2.0})
-        {
-            SCOPED_TRACE(name + " " + std::to_string(nDim) + "D, h/dp "
-                         + std::to_string(hOverDp));
-            const Kernel k(hOverDp, nDim);
-            const wallContactProfile p = makeWallContactProfile(k, nDim, 1);
-            // h deep in the wall the fraction is nearly the lattice sum of
-            // the kernel, 1; on its surface one half; h outside it little.
-            EXPECT_NEAR(p.fraction(-hOverDp), 1.0, 0.06);
-            EXPECT_NEAR(p.fraction(0), 0.5, 0.01);
-            EXPECT_LT(p.fraction(hOverDp), 0.1);
-            for (int i = 0; i < wallContactProfile::n; ++i)
-            {
-                EXPECT_GT(p.phi[i], p.phi[i + 1]) << "entry " << i;
-            }
-            for (const scalar g : {-0.9, -0.2, 0.0, 0.15, 0.4, 0.95})
-            {
-                EXPECT_NEAR(p.gap(p.fraction(g*hOverDp)), g*hOverDp,
-                            test::tol(1e-9, 1e-5));
-            }
-            // Over a lattice wall, the gap to its surface (half a spacing
-            // beyond the outer row) is read from the fraction to within a
-            // few hundredths of a spacing, wherever the point lies along
-            // the rows: the contact surface is flat.
-            for (const scalar s : {0.0, 0.25, 0.5, 0.625, 0.75, 1.0})
-            {
-                for (const scalar along : {0.0, 0.25, 0.5})
-                {
-                    const scalar gap =
-                        p.gap(flatWallFraction(k, nDim, s, along));
-                    EXPECT_NEAR(gap, s - 0.5, 0.03)
-                        << "s = " << s << ", along = " << along;
-                }
-            }
-        }
-    }
-}
-
-
-// Three rows of wall particles (2D, spacing dp) below y = 0 and one solid
-// particle of spacing dp/4 at x; returns its contact plane.
-contactPlane planeAt(const vec3 x)
+// Three rows of floor particles (2D, spacing dp) below y = 0, from x =
+// -0.13 to 0.09; with a side wall, three columns of it at x = -0.11 to
+// -0.13 up to y = 0.05 (its surface at x = -0.105). One solid particle of
+// spacing dp/4 at x; returns its contact plane.
+contactPlane planeAt(const vec3 x, const bool sideWall = false)
 {
     const scalar dp = 0.01, dpSolid = dp/4, rho0 = 1000;
     const wendlandC2Kernel k(1.5*dp, 2);
+    std::vector<vec3> walls;
+    for (int row = 0; row < 3; ++row)
+    {
+        for (int col = -13; col < 10; ++col)
+        {
+            walls.push_back({col*dp, -row*dp, 0});
+        }
+    }
+    for (int col = 11; sideWall && col <= 13; ++col)
+    {
+        for (int row = 1; row <= 5; ++row)
+        {
+            walls.push_back({-col*dp, row*dp, 0});
+        }
+    }
     particleFields f;
-    const int nx = 20, rows = 3;
-    const label n = nx*rows + 1;
+    const label n = label(walls.size()) + 1;
     f.resize(n, false, false);
     f.link.assign(n, 0);              // the solid particle is the only one
     for (label m = 0; m < n; ++m)
     {
         const bool solid = m == n - 1;
-        f.position[m] = solid ? x : vec3{(m % nx - nx/2)*dp, -(m/nx)*dp, 0};
+        f.position[m] = solid ? x : walls[m];
         f.velocity[m] = {0, 0, 0};
         f.mass[m] = solid ? rho0*dpSolid*dpSolid : rho0*dp*dp;
         f.rho[m] = rho0;
@@ -117,16 +64,16 @@ contactPlane planeAt(const vec3 x)
         f.body[m] = solid ? 1 : 0;
         f.id[m] = m;
     }
-    const cellGrid grid = makeCellGrid({-(nx/2 + 1)*dp, -(rows + 1)*dp, 0},
-        {(nx/2 + 1)*dp, 4*dp, 0}, k.support(), 1, 2);
+    const cellGrid grid = makeCellGrid({-0.15, -0.04, 0}, {0.11, 0.08, 0},
+                                       k.support(), 1, 2);
     cellList list;
     buildCellList(openmpExec{}, grid, f.position.data(), n, list);
     EXPECT_EQ(list.nInside, n);
     f.reorder(list.order, list.nInside, false, false);
     contactPlane plane{{-1, -1, -1}, {-1, -1, -1}};
     parallelFor(openmpExec{}, n, wallContactPlaneOp<wendlandC2Kernel>{k,
-        grid, list.cellStart.data(), f.view(), makeWallContactProfile(k, 2, dp),
-        rho0, scalar(0.5), k.support()*k.support(), &plane});
+        grid, list.cellStart.data(), f.view(), rho0, scalar(0.5),
+        k.support()*k.support(), &plane});
     return plane;
 }
 
@@ -145,34 +92,54 @@ std::pair<vec3, vec3> stepAgainst(const contactPlane& plane, vec3 x, vec3 u,
 } // End anonymous namespace
 
 
-TEST(solidWallContact, profileMatchesFlatLatticeWalls)
-{
-    checkProfile<wendlandC2Kernel>("wendlandC2");
-    checkProfile<cubicSplineKernel>("cubicSpline");
-}
-
-
 TEST(solidWallContact, planeOfTheSmoothedWallEverywhere)
 {
     // The wall's surface is y = dp/2 = 0.005 above the outer row; the
-    // contact surface is dp_s/2 = 0.00125 further, y = 0.00625; planes are
-    // set within dp_s/2 more, below y = 0.0075.
+    // contact surface is dp_s/2 = 0.00125 further, y = 0.00625, above a
+    // wall particle, and dips to y = sqrt(0.00625^2 - 0.005^2) = 0.00375
+    // midway between two (contact with the nearest wall particle).
+    EXPECT_EQ(mag(planeAt({0, 0.009, 0}).normal), 0);
+    EXPECT_NEAR(planeAt({0, 0.007, 0}).point.y, 0.00625, 1e-9);
     for (const scalar x : {0.0, 0.0025, 0.005})      // on, off, between rows
     {
         SCOPED_TRACE("x = " + std::to_string(x));
-        EXPECT_EQ(mag(planeAt({x, 0.008, 0}).normal), 0);
-        // Near contact, on the outer row, and between two wall particles
-        // (x = 0.005), where pairwise pushes along the rows cancel: the
-        // plane is the contact surface to within 0.03 dp, its normal
-        // within 3 degrees of the wall's (the rows' ripple tilts the
-        // gradient off the symmetric points).
-        for (const scalar y : {0.007, 0.005, 0.0})
+        // Near contact and on the outer row, also between two wall
+        // particles (x = 0.005), where pairwise pushes along the rows
+        // cancel: the normal within 3 degrees of the wall's (the rows'
+        // ripple tilts the gradient off the symmetric points), the plane
+        // below the contact surface's top and, on the outer row, well
+        // ahead of the particle.
+        for (const scalar y : {0.005, 0.0})
         {
             const contactPlane c = planeAt({x, y, 0});
             EXPECT_NEAR(mag(c.normal), 1, 1e-12) << "y = " << y;
             EXPECT_GT(c.normal.y, std::cos(3*M_PI/180)) << "y = " << y;
-            EXPECT_NEAR(c.point.y, 0.00625, 0.0003) << "y = " << y;
+            if (y == 0) EXPECT_GT(c.point.y, 0.001) << "pushed out";
+            EXPECT_LT(c.point.y, 0.00625 + 1e-9) << "y = " << y;
         }
+    }
+    EXPECT_NEAR(planeAt({0.005, 0.005, 0}).point.y,
+                0.005 - (std::sqrt(0.005*0.005 + 0.005*0.005) - 0.00625),
+                1e-6);
+}
+
+
+TEST(solidWallContact, innerCornerCountsTheNearWallOnly)
+{
+    // A solid particle at contact with a side wall (surface x = -0.105,
+    // contact x = -0.10375) 0.4 and 1.5 spacings above the floor's
+    // surface: its plane faces the side wall and lies at the particle, not
+    // ahead of it (a gap read from the summed volume fraction would see
+    // the floor too and push the particle off the side wall).
+    for (const scalar y : {0.009, 0.02})
+    {
+        SCOPED_TRACE("y = " + std::to_string(y));
+        const vec3 x{-0.10375, y, 0};
+        const contactPlane c = planeAt(x, true);
+        ASSERT_NEAR(mag(c.normal), 1, 1e-12);
+        EXPECT_GT(c.normal.x, std::cos(M_PI/4));
+        EXPECT_GT(dot(x - c.point, c.normal), -0.0003);
+        EXPECT_LT(dot(x - c.point, c.normal), 0.0015);
     }
 }
 
