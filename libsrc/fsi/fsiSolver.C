@@ -100,8 +100,8 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         << ", walls: Adami extrapolated pressure\n";
     if (coupling_ && hasWalls_)
     {
-        log_<< "    solid-wall contact: hard, at a gap of dp_s/2 to the walls'"
-            << " smoothed surface\n";
+        log_<< "    solid-wall contact: hard, at a gap of dp_s/2 to the nearest"
+            << " wall particle's surface\n";
     }
     log_
         << "    g = " << str(model_.g) << "\n"
