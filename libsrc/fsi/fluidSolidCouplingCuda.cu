@@ -202,7 +202,8 @@ label fluidSolidCoupling::advanceOnDevice(const double t, const scalar dt,
         const vcpmSolid& s = *solids_.bodies()[b].solid;
         const label o = offsets_[b];
         vcpmSolidView v{s.size(), d.bonds[b].view(), s.constants(),
-            s.material().mass, s.gravity, s.damping, d.position.data() + o,
+            s.material().mass, s.gravity, s.damping, s.bondViscosity(),
+            d.position.data() + o,
             d.velocity.data() + o, d.force.data() + o, held + o,
             d.clamped.data() + o, d.clampVelocity.data() + o,
             d.stretchSum.data() + 2*o, bodyMove::none(),

@@ -25,7 +25,8 @@ vcpmMaterial solidBodySet::readMaterial
     const int nDimensions,
     const scalar dp,
     const scalar massRho,
-    scalar& damping
+    scalar& damping,
+    scalar& latticeDamping
 ) const
 {
     const fs::path file = caseDir_/"constant/solidProperties";
@@ -36,6 +37,8 @@ vcpmMaterial solidBodySet::readMaterial
     }
     const dictionary all = dictionary::fromFile(file);
     const dictionary& props = all.subDict(name);
+    props.checkKeywords({"rho", "E", "nu", "lattice", "plane",
+                         "surfaceCorrection", "damping", "latticeDamping"});
     // rho of the sub-dictionary, else the one generateParticles gave the
     // particles' mass (a body-level rho).
     const scalar rho = props.found("rho")
@@ -45,6 +48,14 @@ vcpmMaterial solidBodySet::readMaterial
     {
         props.fatalAt("damping", "Keyword 'damping' of solid '" + name
             + "': the mass-proportional damping (1/s) must be >= 0");
+    }
+    latticeDamping = props.getOrDefault<scalar>("latticeDamping",
+                                                defaultLatticeDamping);
+    if (!(latticeDamping >= 0 && latticeDamping <= 0.2))
+    {
+        props.fatalAt("latticeDamping", "Keyword 'latticeDamping' of solid '"
+            + name + "': the damping ratio of the lattice's highest mode must"
+            " be in [0, 0.2] (0: none; more damps the structure's own modes)");
     }
     return vcpmMaterial::read(props, name, nDimensions, rho, dp);
 }
@@ -85,9 +96,10 @@ solidBodySet::solidBodySet
         const label n = b.size();
         const scalar massRho = b.hasField("mass") && n
           ? b.scalarField("mass")[0]/std::pow(b.dp(), nDim) : 0;
-        scalar damping = 0;
+        scalar damping = 0, latticeDamping = 0;
         const vcpmMaterial mat = readMaterial(b.name(), nDim, b.dp(),
-                                              massRho, damping);
+                                              massRho, damping,
+                                              latticeDamping);
 
         std::vector<vec3> reference = b.position();
         if (!freshStart)
@@ -131,6 +143,7 @@ solidBodySet::solidBodySet
         }
         s.gravity = g;
         s.damping = damping;
+        s.latticeDamping = latticeDamping;
 
         log << "    " << b.name() << " (solid): " << n << " particles, "
             << nClamped << " clamped, " << s.bonds().nBonds() << " bonds\n"
@@ -139,7 +152,8 @@ solidBodySet::solidBodySet
             << (nDim == 2 ? (mat.plane == planeModel::planeStrain
                 ? "square2D planeStrain" : "square2D planeStress")
                 : "simpleCubic3D")
-            << ", damping " << damping << " 1/s\n"
+            << ", damping " << damping << " 1/s, latticeDamping "
+            << latticeDamping << "\n"
             << "        c_p = " << mat.pWaveSpeed << " m/s, stable deltaT = "
             << sb.stableDeltaT << " s\n";
         bodies_.push_back(std::move(sb));
