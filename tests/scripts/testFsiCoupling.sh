@@ -38,23 +38,8 @@ block { rho 1100; E 2e6; nu 0.3; lattice $lattice; }
 DICT
     writeWaterModel "$c" "c0 40;"
     writeGravity "$c" "(0 0 0)"
-    cat > "$c/system/controlDict" <<'DICT'
-application     sphVcpmFsi;
-startFrom       latestTime;
-startTime       0;
-stopAt          endTime;
-endTime         0.03;
-deltaT          1e-5;
-adjustTimeStep  yes;
-maxCo           0.2;
-maxDeltaT       1e-3;
-writeControl    adjustableRunTime;
-writeInterval   0.03;
-writeFormat     ascii;
-writePrecision  17;
-logInterval     1000;
-functions { blockForce { type forces; body block; } }
-DICT
+    writeFsiControl "$c" 0.03 1e-5 0.03 1000 \
+        'functions { blockForce { type forces; body block; } }'
 }
 
 # Total momentum "px py scale" of the water and the block in time

@@ -68,6 +68,24 @@ writeGravity()
     printf 'dimensions [0 1 -2 0 0 0 0];\nvalue      %s;\n' "$2" > "$1/constant/g"
 }
 
+# writeFsiControl <case> <endTime> <deltaT> <writeInterval> <logInterval>
+# [lines...]: system/controlDict of a coupled run (adaptive step at maxCo
+# 0.2, ascii at 17 digits), the lines appended (functions, say).
+writeFsiControl()
+{
+    mkdir -p "$1/system"
+    {
+        printf '%s\n' "application     sphVcpmFsi;" "startFrom       latestTime;" \
+            "startTime       0;" "stopAt          endTime;" "endTime         $2;" \
+            "deltaT          $3;" "adjustTimeStep  yes;" "maxCo           0.2;" \
+            "maxDeltaT       1e-3;" "writeControl    adjustableRunTime;" \
+            "writeInterval   $4;" "writeFormat     ascii;" "writePrecision  17;" \
+            "logInterval     $5;"
+        shift 5
+        [ $# -eq 0 ] || printf '%s\n' "$@"
+    } > "$1/system/controlDict"
+}
+
 # writeWaterModel <case> "<c0 or coefSound entry>": water in
 # constant/fluidProperties and the default schemes (Wendland C2, h = 1.5
 # dp, Fourtakas diffusion, laminar viscosity, Adami walls) in

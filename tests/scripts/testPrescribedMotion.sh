@@ -66,27 +66,12 @@ roll
 DICT
 writeWaterModel "$c" "coefSound 10;"
 writeGravity "$c" "(0 -9.81 0)"
-cat > "$c/system/controlDict" <<'DICT'
-application     sphVcpmFsi;
-startFrom       latestTime;
-startTime       0;
-stopAt          endTime;
-endTime         4;
-deltaT          1e-4;
-adjustTimeStep  yes;
-maxCo           0.2;
-maxDeltaT       1e-3;
-writeControl    adjustableRunTime;
-writeInterval   2;
-writeFormat     ascii;
-writePrecision  17;
-logInterval     5000;
-functions
-{
-    levels { type freeSurfaceGauges; writeControl runTime; writeInterval 0.05;
-             locations ((0.05 0 0) (0.35 0 0)); maxHeight 0.3; }
-}
-DICT
+writeFsiControl "$c" 4 1e-4 2 5000 \
+    'functions' \
+    '{' \
+    '    levels { type freeSurfaceGauges; writeControl runTime; writeInterval 0.05;' \
+    '             locations ((0.05 0 0) (0.35 0 0)); maxHeight 0.3; }' \
+    '}'
 generateParticles -case "$c" > "$scratch/log.genWater" 2>&1
 check "still water: generateParticles" [ $? -eq 0 ]
 sphVcpmFsi -case "$c" > "$scratch/log.water" 2>&1
@@ -198,22 +183,7 @@ writeWaterModel "$c" "coefSound 15;"
 writeGravity "$c" "(0 -9.81 0)"
 # First sloshing period of 0.4 m x 0.1 m: 2 pi/sqrt(g k tanh(k h)), k =
 # pi/0.4: 0.884 s; writes every half period.
-cat > "$c/system/controlDict" <<'DICT'
-application     sphVcpmFsi;
-startFrom       latestTime;
-startTime       0;
-stopAt          endTime;
-endTime         3.094;
-deltaT          1e-4;
-adjustTimeStep  yes;
-maxCo           0.2;
-maxDeltaT       1e-3;
-writeControl    adjustableRunTime;
-writeInterval   0.442;
-writeFormat     ascii;
-writePrecision  17;
-logInterval     10000;
-DICT
+writeFsiControl "$c" 3.094 1e-4 0.442 10000
 generateParticles -case "$c" > "$scratch/log.genPush" 2>&1
 check "accelerated tank: generateParticles" [ $? -eq 0 ]
 sphVcpmFsi -case "$c" > "$scratch/log.push" 2>&1

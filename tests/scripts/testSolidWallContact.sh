@@ -25,22 +25,7 @@ cat > "$c/constant/solidProperties" <<'DICT'
 block { rho 1100; E 1e6; nu 0.3; lattice square2D; plane planeStrain; damping 20; }
 DICT
 writeWaterModel "$c" "coefSound 20;"
-cat > "$c/system/controlDict" <<'DICT'
-application     sphVcpmFsi;
-startFrom       latestTime;
-startTime       0;
-stopAt          endTime;
-endTime         0.8;
-deltaT          1e-5;
-adjustTimeStep  yes;
-maxCo           0.2;
-maxDeltaT       1e-3;
-writeControl    adjustableRunTime;
-writeInterval   0.4;
-writeFormat     ascii;
-writePrecision  17;
-logInterval     10000;
-DICT
+writeFsiControl "$c" 0.8 1e-5 0.4 10000
 generateParticles -case "$c" > "$scratch/log.gen" 2>&1
 check "generateParticles" [ $? -eq 0 ]
 sphVcpmFsi -case "$c" > "$scratch/log.run" 2>&1
