@@ -800,7 +800,10 @@ void fsiSolver::run()
     while (time_ < control_.endTime*(1 - 1e-12))
     {
         step();
-        executeFunctions();
+        {
+            phaseTimers::scope s(timers_, phaseTimers::functions);
+            executeFunctions();
+        }
 
         const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
         const auto outputStart = std::chrono::steady_clock::now();
@@ -865,6 +868,7 @@ void fsiSolver::run()
             << str(solidSubSteps_/std::max<label>(1, stepsRun_), 4)
             << " solid steps per fluid step\n";
     }
+    timers_.print(log_, stepsRun_);
     for (const bodyInfo& b : bodies_)
     {
         if (b.nRemoved > 0)

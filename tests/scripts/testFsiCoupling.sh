@@ -6,7 +6,7 @@
 # reaction of the fluid's forces over each step. The solid must also have
 # been pushed (it takes momentum from the fluid), no fluid particle may
 # end inside the solid, and the log reports the sub-steps. A third run
-# does the same in 3D (simple cubic lattice, r = 1).
+# does the same in 3D (simple cubic lattice, r = 1). Last, -timers.
 source "$(dirname "$0")/testLib.sh"
 source "$(dirname "$0")/fieldTools.sh"
 
@@ -109,4 +109,28 @@ print(len(inside), "water particles inside the block")
 sys.exit(1 if inside else 0)
 PY
 done
+
+# -timers: the run summary has the time of each phase of the step, which
+# add up to no more than the time loop's wall clock and to most of it; the
+# timing changes no result.
+c="$scratch/fsiTimers"
+makeCase "$c" 0.01 2
+generateParticles -case "$c" > "$scratch/log.genTimers" 2>&1
+sphVcpmFsi -case "$c" -timers > "$scratch/log.runTimers" 2>&1
+check "-timers: sphVcpmFsi runs" [ $? -eq 0 ]
+log="$scratch/log.runTimers"
+for phase in "sort and cell list" "wall extrapolation" "fluid rates" \
+    "solids and coupling" "predictor, corrector, wall motion" "function objects"; do
+    expectIn "-timers: the summary times '$phase'" "$log" "^ +$phase +[0-9.]+ s +[0-9.]+ %"
+done
+check "-timers: the phases add up to 50-100 % of the loop's wall clock" python3 - "$log" <<'PY'
+import re, sys
+t = open(sys.argv[1]).read()
+loop = float(re.search(r"^Run summary: .* in ([0-9.e+-]+) s wall clock", t, re.M).group(1))
+phases = [float(x) for x in re.findall(r"^ {8}[a-z, ]+? +([0-9.]+) s +[0-9.]+ %", t, re.M)]
+print(len(phases), "phases,", sum(phases), "s of", loop, "s")
+sys.exit(0 if len(phases) == 6 and 0.5*loop <= sum(phases) <= loop*1.01 + 0.003 else 1)
+PY
+check "-timers: the same block positions as without" \
+    cmp "$c/0.03/block/position" "$scratch/fsir1/0.03/block/position"
 finish

@@ -34,6 +34,9 @@ int main(int argc, char* argv[])
         args.addOption("device", "cpu|cuda|auto",
             "where to run (overrides $SPHVCPM_DEVICE and controlDict's"
             " device)");
+        args.addBoolOption("timers", "time the phases of the step and"
+            " print them in the run summary (on the GPU each phase then"
+            " waits for the last)");
         if (!args.parse(argc, argv))
         {
             return 0;
@@ -65,6 +68,7 @@ int main(int argc, char* argv[])
         else
         {
             fsiSolver solver(args.casePath(), std::cout, asked);
+            if (args.found("timers")) solver.enableTimers();
             solver.run();
         }
 
