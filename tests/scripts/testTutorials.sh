@@ -20,6 +20,15 @@ expectedCount()
         sluiceGate3D/water)      echo $((24*8*20)) ;;
         sluiceGate3D/gate)       echo $((6*16*56)) ;;                     # dp/2: 6 layers
         sluiceGate3D/flume)      echo $((74*14*35 - 68*8*32 + 3*14*16 + 2*24*3*16)) ;;  # + raised end
+        # The fine dictionaries (system/generateParticlesDict.fine)
+        rollingTank3D.fine/plate)    echo $((5*50*144)) ;;               # 0.8 mm
+        rollingTank3D.fine/oil)      echo $((190*25*72)) ;;
+        rollingTank3D.fine/oilRight) echo $((189*25*72)) ;;  # a column dropped at the end wall
+        rollingTank2D.fine/plate)    echo $((5*144)) ;;
+        rollingTank2D.fine/oil)      echo $((190*72)) ;;
+        rollingTank2D.fine/oilRight) echo $((189*72)) ;;
+        sluiceGate3D.fine/water)     echo 480000 ;;
+        sluiceGate3D.fine/gate)      echo 84000 ;;
         *) echo "" ;;
     esac
 }
@@ -30,6 +39,23 @@ for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
     if [ $# -gt 0 ] && [[ " $* " != *" $name "* ]]; then
         continue
     fi
+    # The other particle dictionaries of a case (the GPU-scale variants
+    # that an Allrun option selects) generate, with their counts.
+    for dict in "$src"/system/generateParticlesDict.*; do
+        [ -f "$dict" ] || continue
+        variant="$name.${dict##*.}"
+        run="$scratch/$variant"
+        cp -r "$src" "$run"
+        (cd "$run" && generateParticles -dict "system/$(basename "$dict")" > log.generateParticles 2>&1)
+        check "$variant: generateParticles -dict $(basename "$dict") succeeds" [ $? -eq 0 ]
+        for body in $(cd "$run/0" && ls -d */ | tr -d /); do
+            [ "$body" = uniform ] && continue
+            want=$(expectedCount "$variant" "$body")
+            [ -n "$want" ] && expectIn "$variant: $body has $want particles" \
+                "$run/log.generateParticles" "$body \([a-z]+\): $want particles"
+        done
+        rm -rf "$run"
+    done
     # Cases too long for a 2-core CI (marked '# sphvcpm: long run' in their
     # Allrun) only generate their particles, unless SPHVCPM_LONG_TUTORIALS=1.
     if grep -q '^# sphvcpm: long run' "$allrun" && [ "${SPHVCPM_LONG_TUTORIALS:-0}" != 1 ]; then
