@@ -33,6 +33,19 @@ expectedCount()
     esac
 }
 
+# checkGeneratedCounts <name> <case>: the counts that generateParticles
+# logged for the case's bodies against expectedCount <name> <body>.
+checkGeneratedCounts()
+{
+    local body want
+    for body in $(cd "$2/0" && ls -d */ | tr -d /); do
+        [ "$body" = uniform ] && continue
+        want=$(expectedCount "$1" "$body")
+        [ -n "$want" ] && expectIn "$1: $body has $want particles" \
+            "$2/log.generateParticles" "$body \([a-z]+\): $want particles"
+    done
+}
+
 for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
     src=$(dirname "$allrun")
     name=$(basename "$src")
@@ -48,12 +61,7 @@ for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
         cp -r "$src" "$run"
         (cd "$run" && generateParticles -dict "system/$(basename "$dict")" > log.generateParticles 2>&1)
         check "$variant: generateParticles -dict $(basename "$dict") succeeds" [ $? -eq 0 ]
-        for body in $(cd "$run/0" && ls -d */ | tr -d /); do
-            [ "$body" = uniform ] && continue
-            want=$(expectedCount "$variant" "$body")
-            [ -n "$want" ] && expectIn "$variant: $body has $want particles" \
-                "$run/log.generateParticles" "$body \([a-z]+\): $want particles"
-        done
+        checkGeneratedCounts "$variant" "$run"
         rm -rf "$run"
     done
     # Cases too long for a 2-core CI (marked '# sphvcpm: long run' in their
@@ -63,12 +71,7 @@ for allrun in $(find "$SPHVCPM_DIR/tutorials" -name Allrun | sort); do
         cp -r "$src" "$run"
         (cd "$run" && generateParticles > log.generateParticles 2>&1)
         check "$name (long run, particles only): generateParticles succeeds" [ $? -eq 0 ]
-        for body in $(cd "$run/0" && ls -d */ | tr -d /); do
-            [ "$body" = uniform ] && continue
-            want=$(expectedCount "$name" "$body")
-            [ -n "$want" ] && expectIn "$name: $body has $want particles" \
-                "$run/log.generateParticles" "$body \([a-z]+\): $want particles"
-        done
+        checkGeneratedCounts "$name" "$run"
         continue
     fi
     run="$scratch/$name"
