@@ -420,7 +420,6 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
             const scalar mw = pf.mass[w];
             const scalar rhow = pf.rho[w];
             const scalar pw = pf.p[w];
-            const bool solid = pf.kind[w] == solidKind;
             forEachFluidNear(s, kernel, xw, [&](const label j, const scalar r)
             {
                 if (r <= 0) return;
@@ -430,8 +429,7 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
                 const scalar rhof = pf.rho[j];
                 // a_f -= m_w (p_f + p_w)/(rho_f rho_w) G x_fw
                 // As the pair terms see it (fluidPairTerms).
-                const scalar pf_j =
-                    solid ? pressureTowardSolid(pf.p[j]) : pf.p[j];
+                const scalar pf_j = pressureTowardBoundary(pf.p[j]);
                 f += (mf*mw*(pf_j + pw)/(rhof*rhow)*G)*d;
                 if (laminar)
                 {

@@ -656,6 +656,67 @@ TEST(fluidRates, momentumConservation)
     }
 }
 
+// Fluid over a wall (the lowest 3 rows) and beside a solid (the leftmost
+// 3 columns), the wall and solid at zero extrapolated pressure. Under
+// tension the fluid's pressure counts as zero in its pairs with them: a
+// boundary never pulls fluid into itself, so the fluid moves as if the
+// boundary had no mass. Under compression the boundary pushes the fluid
+// away.
+TEST(fluidRates, boundariesPushButNeverPull)
+{
+    for (const scalar P : {-2000.0, 2000.0})
+    {
+        fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+        for (label k = 0; k < b.n; ++k)
+        {
+            const bool wall = b.iy(k) < 3, solid = b.ix(k) < 3;
+            b.f.kind[k] = wall ? wallKind : solid ? solidKind : fluidKind;
+            b.f.p[k] = b.f.kind[k] == fluidKind ? P : 0;
+        }
+        b.rates();
+        std::vector<vec3> withBoundary(b.f.acceleration.begin(),
+                                       b.f.acceleration.end());
+        for (label k = 0; k < b.n; ++k)
+        {
+            if (b.f.kind[k] != fluidKind) b.f.mass[k] = 0;
+        }
+        b.rates();
+        label near = 0;
+        for (label k = 0; k < b.n; ++k)
+        {
+            // Fluid of the first two rows above the wall, away from the
+            // solid and from the block's other edges.
+            if (b.f.kind[k] != fluidKind || b.iy(k) > 4
+             || b.ix(k) < 6 || b.ix(k) > 16) continue;
+            ++near;
+            const vec3 push = withBoundary[k] - b.f.acceleration[k];
+            if (P < 0)
+            {
+                EXPECT_LT(mag(push), test::tol(1e-12, 1e-5)*mag(withBoundary[k]))
+                    << "fluid particle " << k << " pulled by the wall";
+            }
+            else
+            {
+                EXPECT_GT(push.y, 0.05*P/(rho0*b.dp)) << k;
+            }
+        }
+        EXPECT_EQ(near, 2*11);
+        // The same beside the solid: x instead of y.
+        for (label k = 0; k < b.n; ++k)
+        {
+            if (b.f.kind[k] != fluidKind || b.ix(k) > 4
+             || b.iy(k) < 6 || b.iy(k) > 16) continue;
+            const scalar pushX = withBoundary[k].x - b.f.acceleration[k].x;
+            if (P < 0)
+            {
+                EXPECT_LE(std::fabs(pushX), test::tol(1e-12, 1e-5)*mag(withBoundary[k]))
+                    << "fluid particle " << k << " pulled by the solid";
+            }
+            else { EXPECT_GT(pushX, 0.05*P/(rho0*b.dp)) << k; }
+        }
+    }
+}
+
 // Linear shear u_x = gamma y: the laminar term is zero in the interior.
 TEST(fluidRates, laminarLinearShear)
 {
