@@ -97,7 +97,10 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     }
     log_<< ", turbulence " << (model_.sps ? "SPS" : "off") << "\n"
         << "    shifting " << shiftingName(model_.shifting)
-        << ", walls: Adami extrapolated pressure\n";
+        << ", walls: Adami extrapolated pressure, contact push "
+        << (model_.contact > 0 ? str(model_.contact)
+                                 + " within 0.95 (dp + dp_b)/2"
+                               : std::string("off")) << "\n";
     if (coupling_ && hasWalls_)
     {
         log_<< "    solid-wall contact: hard, at a gap of dp_s/2 to the nearest"

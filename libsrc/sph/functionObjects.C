@@ -402,15 +402,16 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
     const bool laminar = m.viscosity == viscosityType::laminar;
     const scalar fourNu = 4*m.nu;
     const scalar eta2 = m.eta2();
+    const boundaryContact contact = boundaryContactOf(m);
     sumVec F{0, 0, 0};
 
     withKernel(m, [&](auto kernel)
     {
         // Minus the rate of momentum the wall gives the fluid, pair by
-        // pair: the pressure term and the laminar viscous term of the
-        // fluid's momentum equation (fluidRatesOp). The artificial
-        // viscosity is left out: it is a numerical stabiliser, small in a
-        // resolved flow, not a physical stress.
+        // pair: the pressure term, the contact push and the laminar
+        // viscous term of the fluid's momentum equation (fluidRatesOp).
+        // The artificial viscosity is left out: it is a numerical
+        // stabiliser, small in a resolved flow, not a physical stress.
         const auto onWall = [&](const label w)
         {
             vec3 f{0, 0, 0};
@@ -431,6 +432,8 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
                 // As the pair terms see it (fluidPairTerms).
                 const scalar pf_j = pressureTowardBoundary(pf.p[j]);
                 f += (mf*mw*(pf_j + pw)/(rhof*rhow)*G)*d;
+                // a_f += m_w C x_fw, the contact push
+                f -= (mf*mw*contact(r*r, mw))*d;
                 if (laminar)
                 {
                     const scalar r2 = r*r;

@@ -9,6 +9,21 @@
 namespace sphvcpm
 {
 
+boundaryContact boundaryContactOf(const sphModel& m)
+{
+    boundaryContact b;
+    if (m.contact <= 0) return b;
+    b.strength = m.contact*m.c0*m.c0/(m.rho0*std::pow(m.dp, m.nDimensions));
+    b.halfKappa = 0.5*boundaryContact::kappa;
+    b.dp = m.dp;
+    b.invRho0 = 1/m.rho0;
+    b.nDimensions = m.nDimensions;
+    // Walls share the fluid's spacing, solids are finer (dp/1 to dp/4).
+    b.radiusMax2 = (b.halfKappa*2*m.dp)*(b.halfKappa*2*m.dp);
+    return b;
+}
+
+
 std::string kernelName(const kernelType k)
 {
     return k == kernelType::wendlandC2 ? "wendlandC2" : "cubicSpline";
@@ -184,7 +199,17 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
             m.shiftFreeSurface = nDimensions == 3 ? 2.75 : 1.5;
         }
 
-        dict.getWordOrDefault("boundary", {"adami"}, "adami");
+        typeOf(dict, "boundary", {"adami"}, "adami", &sub);
+        if (sub)
+        {
+            sub->checkKeywords({"type", "contact"});
+            m.contact = sub->getOrDefault<scalar>("contact", 1);
+            if (!(m.contact >= 0 && m.contact <= 10))
+            {
+                sub->fatalAt("contact", "contact must be in [0, 10]"
+                    " (1 is the default; 0 turns the push off)");
+            }
+        }
         m.hydrostaticStart = dict.getWordOrDefault("initialDensity",
             {"hydrostatic", "asRead"}, "hydrostatic") == "hydrostatic";
 

@@ -65,6 +65,13 @@ expectFatal "misspelled kernel" "kernal" "sphSchemes.* at line $line" "'kernel'"
 fresh; sed -i 's/^kernel .*/kernel quintic;/' "$scratch/c/system/sphSchemes"
 expectFatal "unknown kernel" "quintic" "wendlandC2" "cubicSpline"
 
+fresh; sed -i 's/^boundary .*/boundary { type adami; contact -1; }/' "$scratch/c/system/sphSchemes"
+expectFatal "a negative contact push" "contact must be in \\[0, 10\\]" "sphSchemes"
+
+fresh; sed -i 's/^boundary .*/boundary { type adami; contact 0; }/' "$scratch/c/system/sphSchemes"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+expectIn "contact 0: the log says the push is off" "$scratch/c/log.solver" "contact push off"
+
 fresh; sed -i 's/^rho0 .*/rho0 -1000;/' "$scratch/c/constant/fluidProperties"
 expectFatal "negative rho0" "rho0" "fluidProperties"
 

@@ -7,7 +7,8 @@
 // both kernels, cells of 2h and h, laminar and artificial viscosity, SPS
 // on and off: the accelerations, density rates and viscous step terms agree
 // to round-off, and the pair form gives the same bits serial and threaded.
-// Wall particles out of reach of the fluid (nearFluidOp) are skipped.
+// Wall particles out of reach of the fluid (nearFluidOp) are skipped. The
+// contact push between fluid and wall or solid is on.
 // With the lower layers a moving solid instead of a wall, the solid
 // particles' rates (the reaction of the fluid's forces) agree in both
 // forms too, and the fluid and the solid together conserve momentum to
@@ -17,6 +18,7 @@
 #include "fluidInteractions.H"
 #include "pairRates.H"
 #include "parallel.H"
+#include "sphModel.H"
 #include "../testPrecision.H"
 
 #include <gtest/gtest.h>
@@ -113,6 +115,14 @@ struct cloud
         c.shifting = false;
         c.shiftNoBoundary = false;
         c.tensileInvWdp = 0;
+        // The contact push: the first fluid layer lies 0.7-1.3 dp above
+        // the top wall layer, so many pairs are within its 0.95 dp.
+        sphModel m;
+        m.nDimensions = nDim;
+        m.dp = dp;
+        m.c0 = c.c0;
+        m.rho0 = c.rho0;
+        c.contact = boundaryContactOf(m);
     }
 };
 

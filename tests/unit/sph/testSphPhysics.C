@@ -11,6 +11,7 @@
 #include "cellList.H"
 #include "fluidInteractions.H"
 #include "parallel.H"
+#include "sphModel.H"
 #include "../testPrecision.H"
 
 #include <gtest/gtest.h>
@@ -711,6 +712,108 @@ TEST(fluidRates, boundariesPushButNeverPull)
         }
         EXPECT_EQ(near, 2*2*11);
     }
+}
+
+// The contact push between fluid and boundary particles (boundaryContact):
+// with no pressure and no motion it is the only force. A fluid particle
+// moved toward a wall or solid particle of the same spacing gets
+// m_b C(r) x_fb, of magnitude A c0^2/r_c (1 - r/r_c)^2 with
+// r_c = 0.95 dp; a solid gets the opposite momentum; nothing else moves;
+// at 0.96 dp (beyond r_c), between two fluid particles or with A = 0 there
+// is no push. A boundary particle of half the spacing (mass/8 in 3D)
+// pushes within r_c = 0.95 (dp + dp/2)/2.
+TEST(fluidRates, boundaryContactPush)
+{
+    const scalar A = 1;
+    for (const std::uint8_t kind : {wallKind, solidKind})
+    {
+        for (const scalar gap : {0.3, 0.9, 0.96})
+        {
+            for (const bool fluidPair : {false, true})
+            {
+                fluidBlock<wendlandC2Kernel> b(12, 12, 0.01);
+                sphModel m;
+                m.nDimensions = 2;
+                m.dp = b.dp;
+                m.c0 = c0;
+                m.rho0 = rho0;
+                m.contact = A;
+                b.c.contact = boundaryContactOf(m);
+                const scalar rc = 0.95*b.dp;
+                label mover = -1, target = -1;
+                for (label k = 0; k < b.n; ++k)
+                {
+                    if (b.iy(k) < 3 && !fluidPair) b.f.kind[k] = kind;
+                    if (b.ix(k) == 6 && b.iy(k) == 3) mover = k;
+                    if (b.ix(k) == 6 && b.iy(k) == 2) target = k;
+                }
+                // Move the particle at (6, 3) to gap dp above (6, 2), then
+                // sort again.
+                const label moverId = b.f.id[mover];
+                const label targetId = b.f.id[target];
+                b.f.position[mover].y = b.f.position[target].y + gap*b.dp;
+                buildCellList(openmpExec{}, b.grid, b.f.position.data(), b.n,
+                              b.list);
+                b.f.reorder(b.list.order, b.list.nInside, false, false);
+                for (label k = 0; k < b.n; ++k)
+                {
+                    if (b.f.id[k] == moverId) mover = k;
+                    if (b.f.id[k] == targetId) target = k;
+                }
+                b.rates();
+
+                const vec3 d = b.f.position[mover] - b.f.position[target];
+                const scalar r = mag(d);
+                EXPECT_EQ(r < rc, gap < 0.95);
+                const bool pushed = !fluidPair && r < rc;
+                const scalar s = 1 - r/rc;
+                const vec3 expected = pushed
+                  ? (A*c0*c0/rc*s*s/r)*d : vec3{0, 0, 0};
+                const vec3 a = b.f.acceleration[mover];
+                EXPECT_LT(mag(a - expected), 1e-12*(1 + mag(expected)))
+                    << "kind " << int(kind) << ", gap " << gap
+                    << (fluidPair ? ", fluid pair" : "");
+                if (pushed)
+                {
+                    EXPECT_GT(a.y, 1e-4*c0*c0/b.dp);
+                }
+                // The solid's reaction: equal and opposite momentum.
+                if (kind == solidKind && !fluidPair)
+                {
+                    const vec3 sum = b.f.mass[mover]*a
+                                   + b.f.mass[target]*b.f.acceleration[target];
+                    EXPECT_LT(mag(sum), 1e-12*b.f.mass[mover]*(1 + mag(a)));
+                }
+                for (label k = 0; k < b.n; ++k)
+                {
+                    if (k == mover || k == target) continue;
+                    if (b.f.kind[k] == wallKind) continue;
+                    EXPECT_EQ(mag(b.f.acceleration[k]), 0) << k;
+                }
+            }
+        }
+    }
+
+    // The law alone: a finer boundary particle (dp_b = dp/2), in 3D, and
+    // A = 0.
+    sphModel m;
+    m.nDimensions = 3;
+    m.dp = 0.01;
+    m.c0 = c0;
+    m.rho0 = rho0;
+    m.contact = A;
+    const boundaryContact law = boundaryContactOf(m);
+    const scalar mb = rho0*std::pow(0.5*m.dp, 3);
+    const scalar rc = 0.95*0.75*m.dp;
+    for (const scalar r : {0.1*rc, 0.7*rc, 0.999*rc, 1.001*rc, 0.9*m.dp})
+    {
+        const scalar s = 1 - r/rc;
+        const scalar expected = r < rc
+          ? A*c0*c0/(rho0*std::pow(m.dp, 3))*s*s/(rc*r) : 0;
+        EXPECT_NEAR(law(r*r, mb), expected, 1e-12*expected) << r/rc;
+    }
+    m.contact = 0;
+    EXPECT_EQ(boundaryContactOf(m)(0.01*rc*rc, mb), 0);
 }
 
 // Linear shear u_x = gamma y: the laminar term is zero in the interior.
