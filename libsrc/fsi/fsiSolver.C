@@ -98,8 +98,9 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     log_<< ", turbulence " << (model_.sps ? "SPS" : "off") << "\n"
         << "    shifting " << shiftingName(model_.shifting)
         << ", walls: Adami extrapolated pressure, contact push "
-        << (model_.contact > 0 ? str(model_.contact)
-                                 + " within 0.95 (dp + dp_b)/2"
+        << (model_.contact > 0 ? str(model_.contact) + " within "
+                                 + str(boundaryContact::kappa)
+                                 + " (dp + dp_b)/2"
                                : std::string("off")) << "\n";
     if (coupling_ && hasWalls_)
     {

@@ -14,12 +14,12 @@ boundaryContact boundaryContactOf(const sphModel& m)
     boundaryContact b;
     if (m.contact <= 0) return b;
     b.strength = m.contact*m.c0*m.c0/(m.rho0*std::pow(m.dp, m.nDimensions));
-    b.halfKappa = 0.5*boundaryContact::kappa;
     b.dp = m.dp;
     b.invRho0 = 1/m.rho0;
     b.nDimensions = m.nDimensions;
     // Walls share the fluid's spacing, solids are finer (dp/1 to dp/4).
-    b.radiusMax2 = (b.halfKappa*2*m.dp)*(b.halfKappa*2*m.dp);
+    const scalar radiusMax = boundaryContact::kappa*m.dp;
+    b.radiusMax2 = radiusMax*radiusMax;
     return b;
 }
 

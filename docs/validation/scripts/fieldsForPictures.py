@@ -26,7 +26,10 @@ import sys
 
 import numpy as np
 
-WIDTH = {"scalar": 1, "vector": 3, "label": 1}
+# Per kind of list: values per particle, binary type, FoamFile class.
+KINDS = {"scalar": (1, np.float64, "scalarField"),
+         "vector": (3, np.float64, "vectorField"),
+         "label": (1, np.int32, "labelField")}
 
 
 def readField(path):
@@ -35,15 +38,13 @@ def readField(path):
     if not m:
         sys.exit(f"{path}: not a binary field of the solver")
     kind, n = m.group(1).decode(), int(m.group(2))
-    dtype = np.int32 if kind == "label" else np.float64
-    values = np.frombuffer(data, dtype=dtype, count=n*WIDTH[kind],
-                           offset=m.end())
-    return kind, values.reshape(n, WIDTH[kind]) if kind == "vector" else values
+    width, dtype, _ = KINDS[kind]
+    values = np.frombuffer(data, dtype=dtype, count=n*width, offset=m.end())
+    return kind, values.reshape(n, width) if width > 1 else values
 
 
 def writeField(path, kind, values, timeName, body, name):
-    cls = {"scalar": "scalarField", "vector": "vectorField",
-           "label": "labelField"}[kind]
+    _, dtype, cls = KINDS[kind]
     header = f"""/*--------------------------------*- C++ -*----------------------------------*\\
   sphvcpm: fields carried for pictures (docs/validation/scripts/fieldsForPictures.py)
 \\*---------------------------------------------------------------------------*/
@@ -59,7 +60,6 @@ FoamFile
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 """
-    dtype = np.int32 if kind == "label" else np.float64
     n = len(values)
     with open(path, "wb") as f:
         f.write(header.encode())
