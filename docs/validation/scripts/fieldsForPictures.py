@@ -11,7 +11,9 @@ picture needs only positions and the coloured field, in single precision.
     fieldsForPictures.py unpack IN.npz CASE
         writes them back (double precision) into CASE/<time>/<body>/, a
         case that holds the same bodies at time 0 (generateParticles), and
-        copies the bodies that were not packed (fixed walls) from 0/
+        copies the bodies that are not there yet (fixed walls) from 0/; a
+        time packed in several files (one per group of bodies) is unpacked
+        file by file, in any order: packed fields overwrite copied ones
 
 then, in CASE: particlesToVTK -fields '(U vonMises)' and renderParticles.
 The fields are the solver's binary ones: a FoamFile header, then
@@ -114,11 +116,13 @@ def unpack(npz, case):
             os.makedirs(os.path.join(case, timeName, body), exist_ok=True)
             writeField(os.path.join(case, timeName, body, name), kind, a[key],
                        timeName, body, name)
+    # A time may come in several files: a body that an earlier file brought
+    # is not copied over from 0/.
     for body in os.listdir(os.path.join(case, "0")):
         src = os.path.join(case, "0", body)
-        if body not in bodies and body != "uniform" and os.path.isdir(src):
-            shutil.copytree(src, os.path.join(case, timeName, body),
-                            dirs_exist_ok=True)
+        dst = os.path.join(case, timeName, body)
+        if body != "uniform" and os.path.isdir(src) and not os.path.isdir(dst):
+            shutil.copytree(src, dst)
     print(f"{case}/{timeName}: {', '.join(sorted(bodies))} unpacked")
 
 
