@@ -3,8 +3,8 @@
 
 Run by bin/tools/renderParticles, which documents the options and finds a
 way to render without a display; its options reach this script as
---times, --view, --animate, --velocityRange, --stressRange, --size,
---output and --case.
+--times, --view, --cut, --animate, --velocityRange, --stressRange,
+--size, --output and --case.
 
 A body's type (fluid, wall, solid), dp and nDimensions are not in the VTK
 files: they come from <time>/<body>/bodyProperties of the case, so the
@@ -31,6 +31,7 @@ def parseArgs():
     p.add_argument("--case", default=".")
     p.add_argument("--times", default="")
     p.add_argument("--view", choices=("front", "top", "iso"))
+    p.add_argument("--cut", choices=("x", "y", "z"))
     p.add_argument("--animate", type=int, default=0)
     p.add_argument("--velocityRange", type=float, nargs=2)
     p.add_argument("--stressRange", type=float, nargs=2)
@@ -347,6 +348,19 @@ def lookupTable(name, presets, lo, hi, skip=0.0):
     return lut
 
 
+def beyondPlane(source, axis, at, toCamera):
+    """The particles of source beyond the plane axis = at, seen from the
+    camera (whole particles: crinkle clip, the side away from the normal)."""
+    normal = [0.0, 0.0, 0.0]
+    normal[axis] = math.copysign(1.0, toCamera[axis])
+    origin = [0.0, 0.0, 0.0]
+    origin[axis] = at
+    clip = pv.Clip(Input=source, ClipType="Plane", Crinkleclip=1, Invert=1)
+    clip.ClipType.Origin = origin
+    clip.ClipType.Normal = normal
+    return clip
+
+
 def withoutNearFaces(wall, toCamera):
     """The wall less its faces on the camera's side (the front wall, a
     lid): they would hide the flow. A face is the 6 dp (at most 30 % of
@@ -362,15 +376,8 @@ def withoutNearFaces(wall, toCamera):
         if hi - lo <= 6*wall.dp:
             continue
         depth = min(0.3*(hi - lo), 6*wall.dp)
-        normal = [0.0, 0.0, 0.0]
-        normal[k] = math.copysign(1.0, toCamera[k])
-        origin = [(bounds[2*j] + bounds[2*j + 1])/2 for j in range(3)]
-        origin[k] = hi - depth if toCamera[k] > 0 else lo + depth
-        # Whole vertices (crinkle), the side away from the normal (Invert).
-        source = pv.Clip(Input=source, ClipType="Plane", Crinkleclip=1,
-                         Invert=1)
-        source.ClipType.Origin = origin
-        source.ClipType.Normal = normal
+        source = beyondPlane(source, k, hi - depth if toCamera[k] > 0
+                             else lo + depth, toCamera)
     return source
 
 
@@ -451,6 +458,17 @@ def main():
     pic = Picture(args.size, caseName, bool(fluids or solids))
     toCamera, viewUp = viewFrame(view, upAxis(case, planar))
     pic.frame(bounds, toCamera, viewUp)
+    cut = None
+    if args.cut and planar:
+        print("renderParticles: 2D case: -cut %s ignored" % args.cut)
+    elif args.cut:
+        axis = "xyz".index(args.cut)
+        if abs(toCamera[axis]) < 0.2:
+            fail("-cut %s: the %s axis lies across the %s view; cut along an "
+                 "axis that points toward the camera" % (args.cut, args.cut, view))
+        cut = (axis, (bounds[2*axis] + bounds[2*axis + 1])/2)
+        print("renderParticles: fluids and solids cut at %s = %g, the half "
+              "away from the camera shown" % (args.cut, cut[1]))
 
     luts = {"U": lookupTable("U", ("Turbo", "Jet"), *uRange),
             "vonMises": lookupTable("vonMises", ("Inferno (matplotlib)",
@@ -463,6 +481,8 @@ def main():
         source = b.reader
         if b.type == "wall" and not planar:
             source = withoutNearFaces(b, toCamera)
+        elif cut:
+            source = beyondPlane(source, *cut, toCamera)
         d = pv.Show(source, pic.view)
         d.SetRepresentationType("Point Gaussian")
         d.ShaderPreset = "Plain circle" if planar else "Sphere"

@@ -149,4 +149,25 @@ else
     fail "test helper $helper not built"
 fi
 
+# -cut: a 3D tank at t = 0, whole and cut through the middle of y.
+tank="$scratch/tank3D"
+cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/hydrostaticTank3D" "$tank"
+(cd "$tank" && generateParticles > log.generateParticles 2>&1 \
+    && particlesToVTK > log.particlesToVTK 2>&1)
+(cd "$tank" && "$render" -size 400x300 -output whole > "$scratch/log.whole" 2>&1)
+(cd "$tank" && "$render" -size 400x300 -output cut -cut y > "$scratch/log.cut" 2>&1)
+check "-cut y: exit 0" [ $? -eq 0 ]
+cat "$scratch/log.cut"
+expectIn "-cut y: the plane printed" "$scratch/log.cut" \
+    "fluids and solids cut at y = [0-9.e+-]+, the half away from the camera shown"
+checkPng "3D cut" "$tank/cut/tank3D_t0.png" 400 300
+check "-cut y: the picture differs from the whole tank's" differ \
+    "$tank/whole/tank3D_t0.png" "$tank/cut/tank3D_t0.png"
+(cd "$tank" && "$render" -view front -cut x > "$scratch/log.cutAcross" 2>&1)
+check "-cut x in the front view: exit 1" [ $? -eq 1 ]
+expectIn "-cut x in the front view: says why" "$scratch/log.cutAcross" \
+    "-cut x: the x axis lies across the front view"
+"$render" -cut w > "$scratch/log.cutBad" 2>&1
+check "-cut w: exit 1" [ $? -eq 1 ]
+
 finish
