@@ -113,7 +113,9 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         << grid_.nx << " x " << grid_.ny << " x " << grid_.nz
         << " cells of " << grid_.cellSize << " m\n"
         << "    " << particles_.bytesPerParticle() + sizeof(std::uint8_t)
-        << " bytes per particle and 5 per cell\n" << std::endl;
+        << " bytes per particle and "
+        << 3*sizeof(label) + sizeof(std::uint8_t)
+        << " per cell\n" << std::endl;
 
     functions_ = functionObject::readAll(control_.dict, caseDir_,
         startTimeName_, model_, bodies_);

@@ -69,7 +69,7 @@ struct cudaParticleStore
     cellGrid grid;
     label nInside = 0;
     deviceBuffer<std::uint32_t> keysOf;
-    deviceBuffer<label> order, cellStartOf;
+    deviceBuffer<label> order, cellStartOf, kindEndOf;
     deviceBuffer<std::uint8_t> cellHasFluidOf, nearFluidOf;
     deviceBuffer<scalar> viscTermOf;
 
@@ -111,6 +111,7 @@ struct cudaParticleStore
         upload(keysOf, cells.keys);
         upload(order, cells.order);
         upload(cellStartOf, cells.cellStart);
+        upload(kindEndOf, cells.kindEnd);
     }
 
     execType exec() const { return {}; }
@@ -136,15 +137,17 @@ struct cudaParticleStore
     {
         grid = g;
         label* cellStart = atLeast(cellStartOf, grid.nCells() + 1);
+        label* kindEnd = atLeast(kindEndOf, 2*grid.nCells());
         if (n > 0)
         {
             parallelFor(cudaExec{}, n,
-                detail::cellKeyOp{grid, position.data(), keysOf.data(),
-                                  order.data()});
+                detail::cellKeyOp{grid, position.data(), kind.data(),
+                                  keysOf.data(), order.data()});
             sortByKey(cudaExec{}, keysOf.data(), order.data(), n);
         }
         parallelFor(cudaExec{}, grid.nCells() + 1,
-            detail::cellStartOp{keysOf.data(), cellStart, n});
+            detail::cellStartOp{keysOf.data(), cellStart, kindEnd, n,
+                                grid.nCells()});
         copyDeviceToHost(&nInside, cellStart + grid.nCells(), sizeof(label));
         return nInside;
     }
@@ -193,6 +196,7 @@ struct cudaParticleStore
     }
 
     const label* cellStart() const { return cellStartOf.data(); }
+    const label* kindEnd() const { return kindEndOf.data(); }
     const std::uint32_t* keys() const { return keysOf.data(); }
 
     std::uint8_t* cellHasFluid(const label nCells)
@@ -265,6 +269,7 @@ struct cudaParticleStore
         download(keysOf, hostCells.keys, n);
         download(order, hostCells.order, n);
         download(cellStartOf, hostCells.cellStart, grid.nCells() + 1);
+        download(kindEndOf, hostCells.kindEnd, 2*grid.nCells());
     }
 };
 

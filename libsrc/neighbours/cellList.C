@@ -48,12 +48,12 @@ cellGrid makeCellGrid(const vec3& lower, const vec3& upper,
         g.origin.z = -0.5*g.cellSize;
     }
     const double total = double(g.nx)*g.ny*g.nz;
-    if (total > double(std::numeric_limits<label>::max() - 1)
-     || total > 2e9)
+    // The sort key holds the cell and the kind in 32 bits (cellKey).
+    if (total >= double(label(1) << (32 - kindBitsOfCellKey)) - 1)
     {
         fatalError("makeCellGrid: " + std::to_string(total)
-            + " cells do not fit a label; the domain is too large for"
-              " the particle spacing");
+            + " cells do not fit the 32-bit cell key (at most 2^30); the"
+              " domain is too large for the particle spacing");
     }
     return g;
 }

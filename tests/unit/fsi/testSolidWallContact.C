@@ -67,12 +67,13 @@ contactPlane planeAt(const vec3 x, const bool sideWall = false)
     const cellGrid grid = makeCellGrid({-0.15, -0.04, 0}, {0.11, 0.08, 0},
                                        k.support(), 1, 2);
     cellList list;
-    buildCellList(openmpExec{}, grid, f.position.data(), n, list);
+    buildCellList(openmpExec{}, grid, f.position.data(), f.kind.data(), n,
+                  list);
     EXPECT_EQ(list.nInside, n);
     f.reorder(list.order, list.nInside, false, false);
     contactPlane plane{{-1, -1, -1}, {-1, -1, -1}};
     parallelFor(openmpExec{}, n, wallContactPlaneOp<wendlandC2Kernel>{k,
-        grid, list.cellStart.data(), f.view(), rho0, scalar(0.5),
+        grid, list.kindEnd.data(), f.view(), rho0, scalar(0.5),
         k.support()*k.support(), &plane});
     return plane;
 }

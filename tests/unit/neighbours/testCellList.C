@@ -5,7 +5,8 @@
 // clustered clouds, particles exactly on cell faces (dyadic and decimal
 // cell sizes), particles outside the grid and non-finite positions, cell
 // divisors 1 and 2, serial and OpenMP builds (which must agree exactly),
-// and the errors of makeCellGrid.
+// the kind ranges and the walks of one kind, and the errors of
+// makeCellGrid.
 
 #include "cellList.H"
 #include "../testPrecision.H"
@@ -19,6 +20,7 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -203,7 +205,7 @@ void checkList(const cellList& list, const std::vector<vec3>& x0,
     EXPECT_TRUE(std::is_sorted(list.keys.begin(), list.keys.end()));
     for (label k = 0; k < n; ++k)
     {
-        ASSERT_EQ(label(list.keys[k]), g.cellOf(x[k])) << "k = " << k;
+        ASSERT_EQ(cellOfKey(list.keys[k]), g.cellOf(x[k])) << "k = " << k;
         if (k > 0 && list.keys[k] == list.keys[k - 1])
         {
             ASSERT_LT(list.order[k - 1], list.order[k]) << "unstable sort";
@@ -221,7 +223,7 @@ void checkList(const cellList& list, const std::vector<vec3>& x0,
         ASSERT_LE(list.cellStart[c], list.cellStart[c + 1]) << "c = " << c;
         for (label k = list.cellStart[c]; k < list.cellStart[c + 1]; ++k)
         {
-            ASSERT_EQ(label(list.keys[k]), c);
+            ASSERT_EQ(cellOfKey(list.keys[k]), c);
         }
     }
 
@@ -236,7 +238,7 @@ void checkList(const cellList& list, const std::vector<vec3>& x0,
                 << "particle " << list.order[k] << " at (" << x[k].x << ' '
                 << x[k].y << ' ' << x[k].z << ") is outside the grid but"
                 << " sorted before nInside";
-            const label c = list.keys[k];
+            const label c = cellOfKey(list.keys[k]);
             const int idx[3] =
                 {int(c % g.nx), int((c/g.nx) % g.ny), int(c/(label(g.nx)*g.ny))};
             for (int d = 0; d < 3; ++d)
@@ -253,7 +255,7 @@ void checkList(const cellList& list, const std::vector<vec3>& x0,
                 << "particle " << list.order[k] << " at (" << x[k].x << ' '
                 << x[k].y << ' ' << x[k].z << ") is inside the grid but"
                 << " sorted after nInside";
-            ASSERT_EQ(label(list.keys[k]), nCells);
+            ASSERT_EQ(cellOfKey(list.keys[k]), nCells);
         }
     }
 
@@ -305,8 +307,8 @@ void checkList(const cellList& list, const std::vector<vec3>& x0,
             {
                 msg += " " + std::to_string(j) + " (r/support - 1 = "
                      + std::to_string(mag(x[i] - x[j])/support - 1)
-                     + ", keys " + std::to_string(list.keys[i]) + " "
-                     + std::to_string(list.keys[j]) + ")";
+                     + ", cells " + std::to_string(cellOfKey(list.keys[i])) + " "
+                     + std::to_string(cellOfKey(list.keys[j])) + ")";
             }
             ADD_FAILURE() << "particle " << i << " at (" << x[i].x << ' '
                 << x[i].y << ' ' << x[i].z << "): stencil finds "
@@ -365,8 +367,8 @@ void checkCloud(const cloud& c)
 
         const label n = label(c.x.size());
         cellList serialList, openmpList;
-        buildCellList(serialExec{}, g, c.x.data(), n, serialList);
-        buildCellList(openmpExec{}, g, c.x.data(), n, openmpList);
+        buildCellList(serialExec{}, g, c.x.data(), nullptr, n, serialList);
+        buildCellList(openmpExec{}, g, c.x.data(), nullptr, n, openmpList);
         if (!ambiguous)
         {
             EXPECT_EQ(serialList.nInside, nIn);
@@ -492,8 +494,8 @@ TEST(cellList, largeCloudSerialEqualsOpenmp)
         const cellGrid g = makeCellGrid(c.lower, c.upper, c.support,
                                         divisor, 3);
         cellList a, b;
-        buildCellList(serialExec{}, g, c.x.data(), n, a);
-        buildCellList(openmpExec{}, g, c.x.data(), n, b);
+        buildCellList(serialExec{}, g, c.x.data(), nullptr, n, a);
+        buildCellList(openmpExec{}, g, c.x.data(), nullptr, n, b);
         EXPECT_EQ(a.nInside, 60000);
         EXPECT_EQ(a.nInside, b.nInside);
         EXPECT_TRUE(a.keys == b.keys);
@@ -526,6 +528,119 @@ TEST(cellList, largeCloudSerialEqualsOpenmp)
     }
 }
 
+// Particles of three kinds (fluid 0, wall 1, solid 2): each cell holds
+// its fluid, then its walls, then its solids, split at kindEnd; the fluid
+// and wall walks find exactly their kind's part of forEachCandidate's
+// candidates; and the forward walks, with walls and solids walking only
+// fluid, meet every pair within the support that has a fluid particle
+// exactly once (the pair loop's rule: fluidPairRatesOp).
+TEST(cellList, kindRangesAndWalks)
+{
+    for (const int nDim : {2, 3})
+    {
+        std::mt19937_64 gen(61 + nDim);
+        cloud c = makeCloud("kinds", nDim, {0, 0, 0}, {0.4, 0.3, 0.2}, 0.05);
+        addUniform(c, gen, nDim == 3 ? 4000 : 1500);
+        // A dense block (a fine solid in coarse cells) and a pile.
+        addClusters(c, gen, 2, 300, 0.01);
+        const label n = label(c.x.size());
+        std::vector<std::uint8_t> kind(n);
+        std::uniform_int_distribution<int> pickKind(0, 2);
+        for (auto& k : kind) k = std::uint8_t(pickKind(gen));
+
+        for (const int divisor : {1, 2})
+        {
+            const cellGrid g = makeCellGrid(c.lower, c.upper, c.support,
+                                            divisor, nDim);
+            cellList l;
+            buildCellList(openmpExec{}, g, c.x.data(), kind.data(), n, l);
+            std::vector<vec3> x(l.nInside);
+            std::vector<std::uint8_t> k(l.nInside);
+            for (label s = 0; s < l.nInside; ++s)
+            {
+                x[s] = c.x[l.order[s]];
+                k[s] = kind[l.order[s]];
+            }
+            ASSERT_EQ(label(l.kindEnd.size()), 2*g.nCells());
+            for (label cell = 0; cell < g.nCells(); ++cell)
+            {
+                const label b = l.cellStart[cell], f = l.kindEnd[2*cell];
+                const label w = l.kindEnd[2*cell + 1];
+                const label e = l.cellStart[cell + 1];
+                ASSERT_TRUE(b <= f && f <= w && w <= e) << "cell " << cell;
+                for (label s = b; s < e; ++s)
+                {
+                    ASSERT_EQ(g.cellOf(x[s]), cell);
+                    ASSERT_EQ(cellOfKey(l.keys[s]), cell);
+                    ASSERT_EQ(k[s], s < f ? 0 : (s < w ? 1 : 2))
+                        << "cell " << cell << " particle " << s;
+                }
+            }
+
+            const scalar s2 = c.support*c.support;
+            std::set<std::pair<label, label>> expected, met;
+            for (label i = 0; i < l.nInside; ++i)
+            {
+                std::vector<label> all, fluid, walls;
+                forEachCandidate(g, l.cellStart.data(), x[i], [&](label j)
+                {
+                    all.push_back(j);
+                    if (j > i && magSqr(x[i] - x[j]) < s2
+                     && (k[i] == 0 || k[j] == 0))
+                    {
+                        expected.insert({i, j});
+                    }
+                });
+                forEachFluidCandidate(g, l.cellStart.data(),
+                    l.kindEnd.data(), x[i], [&](label j)
+                { fluid.push_back(j); });
+                forEachWallCandidate(g, l.kindEnd.data(), x[i], [&](label j)
+                { walls.push_back(j); });
+                std::vector<label> allFluid, allWalls;
+                for (const label j : all)
+                {
+                    if (k[j] == 0) allFluid.push_back(j);
+                    if (k[j] == 1) allWalls.push_back(j);
+                }
+                std::sort(fluid.begin(), fluid.end());
+                std::sort(walls.begin(), walls.end());
+                std::sort(allFluid.begin(), allFluid.end());
+                std::sort(allWalls.begin(), allWalls.end());
+                ASSERT_EQ(fluid, allFluid) << "particle " << i;
+                ASSERT_EQ(walls, allWalls) << "particle " << i;
+
+                auto meet = [&](label j)
+                {
+                    if (magSqr(x[i] - x[j]) >= s2) return;
+                    if (k[i] != 0 && k[j] != 0) return;
+                    const auto p = std::make_pair(std::min(i, j),
+                                                  std::max(i, j));
+                    ASSERT_TRUE(met.insert(p).second)
+                        << "pair " << i << " " << j << " met twice";
+                };
+                const label cell = cellOfKey(l.keys[i]);
+                if (k[i] == 0)
+                {
+                    forEachForwardCandidate(g, l.cellStart.data(), cell, i,
+                                            meet);
+                }
+                else
+                {
+                    forEachForwardFluidCandidate(g, l.cellStart.data(),
+                        l.kindEnd.data(), cell, [&](label j)
+                    {
+                        ASSERT_EQ(k[j], 0);
+                        meet(j);
+                    });
+                }
+            }
+            EXPECT_GT(expected.size(), 1000u);
+            EXPECT_TRUE(met == expected) << "met " << met.size()
+                << " pairs, expected " << expected.size();
+        }
+    }
+}
+
 // A pair a few ulp inside the support whose cell indices, rounded
 // separately, would lie more than reach cells apart with cells of exactly
 // support/divisor (found by a search over decimal domains and supports);
@@ -554,7 +669,7 @@ TEST(cellList, pairJustInsideSupportIsFound)
         const cellGrid g = makeCellGrid({pc.lower, 0, 0},
             {pc.lower + 1, 1, 0}, pc.support, pc.divisor, 2);
         cellList list;
-        buildCellList(serialExec{}, g, x.data(), 2, list);
+        buildCellList(serialExec{}, g, x.data(), nullptr, 2, list);
         ASSERT_EQ(list.nInside, 2);
         for (label i = 0; i < 2; ++i)
         {
@@ -563,8 +678,8 @@ TEST(cellList, pairJustInsideSupportIsFound)
                              [&](const label j) { found += j != i; });
             EXPECT_EQ(found, 1)
                 << "divisor " << pc.divisor << ": particle " << i
-                << " in cell " << list.keys[i] << " does not see its"
-                << " neighbour in cell " << list.keys[1 - i] << " at r/support"
+                << " in cell " << cellOfKey(list.keys[i]) << " does not see its"
+                << " neighbour in cell " << cellOfKey(list.keys[1 - i]) << " at r/support"
                 << " - 1 = " << mag(x[0] - x[1])/pc.support - 1;
         }
     }
@@ -579,11 +694,11 @@ TEST(cellList, emptyAndAllOutside)
         cellList list;
         if (backend == 0)
         {
-            buildCellList(serialExec{}, g, nullptr, 0, list);
+            buildCellList(serialExec{}, g, nullptr, nullptr, 0, list);
         }
         else
         {
-            buildCellList(openmpExec{}, g, nullptr, 0, list);
+            buildCellList(openmpExec{}, g, nullptr, nullptr, 0, list);
         }
         EXPECT_EQ(list.nInside, 0);
         ASSERT_EQ(label(list.cellStart.size()), g.nCells() + 1);
@@ -595,11 +710,11 @@ TEST(cellList, emptyAndAllOutside)
         const std::vector<vec3> out{{-1, 0.5, 0}, {NaN, 0, 0}, {2, 2, 0}};
         if (backend == 0)
         {
-            buildCellList(serialExec{}, g, out.data(), 3, list);
+            buildCellList(serialExec{}, g, out.data(), nullptr, 3, list);
         }
         else
         {
-            buildCellList(openmpExec{}, g, out.data(), 3, list);
+            buildCellList(openmpExec{}, g, out.data(), nullptr, 3, list);
         }
         EXPECT_EQ(list.nInside, 0);
         for (const label s : list.cellStart)
@@ -611,11 +726,11 @@ TEST(cellList, emptyAndAllOutside)
         const std::vector<vec3> one{{2, 2, 0}, {1, 1, 0}};
         if (backend == 0)
         {
-            buildCellList(serialExec{}, g, one.data(), 2, list);
+            buildCellList(serialExec{}, g, one.data(), nullptr, 2, list);
         }
         else
         {
-            buildCellList(openmpExec{}, g, one.data(), 2, list);
+            buildCellList(openmpExec{}, g, one.data(), nullptr, 2, list);
         }
         EXPECT_EQ(list.nInside, 1);
         EXPECT_EQ(list.order[0], 1);

@@ -193,7 +193,8 @@ struct tankScene
 
         const cellGrid grid = makeCellGrid({-0.05, -0.05, 0}, {0.45, 0.4, 0},
                                            2*model.h, 1, 2);
-        buildCellList(openmpExec{}, grid, fields.position.data(), n, cells);
+        buildCellList(openmpExec{}, grid, fields.position.data(),
+                      fields.kind.data(), n, cells);
         EXPECT_EQ(cells.nInside, n);
         fields.reorder(cells.order, cells.nInside, false, false);
 

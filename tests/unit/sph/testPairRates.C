@@ -90,13 +90,14 @@ struct cloud
         const vec3 upper{(nx + 1)*dp, (ny + 1)*dp, (nz + 1)*dp};
         const cellGrid grid = makeCellGrid({-dp, -dp, nDim == 3 ? -dp : 0},
             upper, 2*h, divisor, nDim);
-        buildCellList(openmpExec{}, grid, f.position.data(), n, cells);
+        buildCellList(openmpExec{}, grid, f.position.data(), f.kind.data(), n,
+                      cells);
         f.reorder(cells.order, cells.nInside, sps, false);
         parallelFor(openmpExec{}, n, inverseDensityOp{f.view()});
         cellHasFluid.resize(grid.nCells());
         nearFluid.resize(n);
         parallelFor(openmpExec{}, grid.nCells(), cellHasFluidOp{
-            cells.cellStart.data(), f.kind.data(), cellHasFluid.data()});
+            cells.cellStart.data(), cells.kindEnd.data(), cellHasFluid.data()});
         parallelFor(openmpExec{}, n, nearFluidOp{grid, cells.keys.data(),
             f.kind.data(), cellHasFluid.data(), nearFluid.data()});
 
@@ -138,7 +139,8 @@ rates gather(cloud& cl, const Kernel& kernel)
     std::vector<scalar> visc(cl.n, 0);
     particleView v = cl.f.view();
     parallelFor(openmpExec{}, cl.n, fluidRatesLoopOp<Kernel>{
-        {kernel, cl.cells.grid, cl.cells.cellStart.data(), v, cl.c},
+        {kernel, cl.cells.grid, cl.cells.cellStart.data(),
+         cl.cells.kindEnd.data(), v, cl.c},
         visc.data()});
     for (label i = 0; i < cl.n; ++i)
     {

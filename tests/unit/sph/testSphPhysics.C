@@ -238,7 +238,8 @@ struct fluidBlock
         }
         grid = makeCellGrid({-dp, -dp, 0}, {(nx + 1)*dp, (ny + 1)*dp, 0},
                             kernel.support(), 1, 2);
-        buildCellList(openmpExec{}, grid, f.position.data(), n, list);
+        buildCellList(openmpExec{}, grid, f.position.data(), f.kind.data(), n,
+                      list);
         EXPECT_EQ(list.nInside, n);
         f.reorder(list.order, list.nInside, false, false);
         for (label k = 0; k < n; ++k)
@@ -281,7 +282,7 @@ struct fluidBlock
     {
         parallelFor(openmpExec{}, n, inverseDensityOp{f.view()});
         fluidRatesOp<Kernel> op{kernel, grid, list.cellStart.data(),
-                                f.view(), c};
+                                list.kindEnd.data(), f.view(), c};
         return parallelReduce(openmpExec{}, n, op, stepTerms::identity(n),
                               stepTermsOp{});
     }
@@ -752,8 +753,8 @@ TEST(fluidRates, boundaryContactPush)
                 const label moverId = b.f.id[mover];
                 const label targetId = b.f.id[target];
                 b.f.position[mover].y = b.f.position[target].y + gap*b.dp;
-                buildCellList(openmpExec{}, b.grid, b.f.position.data(), b.n,
-                              b.list);
+                buildCellList(openmpExec{}, b.grid, b.f.position.data(),
+                              b.f.kind.data(), b.n, b.list);
                 b.f.reorder(b.list.order, b.list.nInside, false, false);
                 for (label k = 0; k < b.n; ++k)
                 {
