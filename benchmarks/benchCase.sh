@@ -1,7 +1,8 @@
 # bench <tutorial> <endTime> <cellDivisor> [dp] [device]: one table row for
 # a scratch copy of tutorials/sphVcpmFsi/<tutorial> run from its start to
 # endTime without writes or function objects, with particle spacing dp
-# (the tutorial's by default) on device cpu or cuda. Sourced by the
+# (the tutorial's by default) on device cpu or cuda, and the time scheme
+# $benchScheme when set (the tutorial's otherwise). Sourced by the
 # run*Benchmarks scripts, which set $top and $scratch.
 bench()
 {
@@ -16,6 +17,11 @@ bench()
     sed -i '/^functions/,$d' "$c/system/controlDict"
     sed -i '/^cellDivisor/d' "$c/system/sphSchemes"
     echo "cellDivisor $divisor;" >> "$c/system/sphSchemes"
+    if [ -n "${benchScheme:-}" ]; then
+        sed -i '/^timeScheme/d' "$c/system/sphSchemes"
+        echo "timeScheme $benchScheme;" >> "$c/system/sphSchemes"
+        name="$name ($benchScheme)"
+    fi
     (cd "$c" && generateParticles > log.generateParticles 2>&1 \
              && sphVcpmFsi -device "$device" > log.sphVcpmFsi 2>&1) \
         || { echo "$name failed"; tail "$c/log.sphVcpmFsi"; return; }

@@ -101,7 +101,13 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         << (model_.contact > 0 ? str(model_.contact) + " within "
                                  + str(boundaryContact::kappa)
                                  + " (dp + dp_b)/2"
-                               : std::string("off")) << "\n";
+                               : std::string("off")) << "\n"
+        << "    time scheme " << timeSchemeName(model_.timeScheme)
+        << (model_.timeScheme == timeSchemeType::verlet
+            ? " (one force pass a step; an Euler step every "
+              + std::to_string(model_.verletSteps) + " steps and after"
+              " each write)"
+            : std::string(" (two force passes a step)")) << "\n";
     if (coupling_ && hasWalls_)
     {
         log_<< "    solid-wall contact: hard, at a gap of dp_s/2 to the nearest"
@@ -250,7 +256,8 @@ void fsiSolver::readStartTime()
     model_ = readSphModel(caseDir_, nDim, dp);
 
     particles_.resize(nTotal, model_.sps,
-                      model_.shifting != shiftingType::none);
+                      model_.shifting != shiftingType::none,
+                      model_.timeScheme == timeSchemeType::verlet);
     solids_ = std::make_unique<solidBodySet>(caseDir_, startTimeName_, bodies,
                                              freshStart_, model_.g, log_);
     motions_ = prescribedMotions(caseDir_, bodies, nDim, true, log_);
@@ -603,7 +610,19 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
     // by the predictor; x^n = x - dt/2 (v^n + v^{n+1}) after the
     // corrector (shifting excepted), x - dt/2 v^n after the predictor.
     particleView v = particles_.view();
-    if (undoPredictor)
+    if (undoCorrector && model_.timeScheme == timeSchemeType::verlet)
+    {
+        // The Verlet update kept v^n and rho^n; x^n = x - dt v^n - dt^2/2 a^n.
+        for (label i = 0; i < v.n; ++i)
+        {
+            if (v.kind[i] != fluidKind) continue;
+            v.position[i] -= dt*v.velocityPrevious[i]
+                + (0.5*dt*dt)*(v.acceleration[i] + model_.g);
+            v.velocity[i] = v.velocityPrevious[i];
+            v.rho[i] = v.rhoPrevious[i];
+        }
+    }
+    else if (undoPredictor)
     {
         for (label i = 0; i < v.n; ++i)
         {
@@ -679,6 +698,9 @@ double fsiSolver::countInteractionsGpu() { return 0; }
 void fsiSolver::write(const bool inBackground)
 {
     finishWrite();
+    // The step after a write is a Verlet scheme's Euler step, in this run as
+    // in a run restarted from what is written here.
+    verletStepsLeft_ = 0;
     const label n = particles_.size();
     std::vector<label> counts(bodies_.size(), 0);
     for (label i = 0; i < n; ++i) ++counts[particles_.body[i]];
@@ -850,16 +872,18 @@ void fsiSolver::run()
     outputSeconds += std::chrono::duration<double>(
         std::chrono::steady_clock::now() - lastWrite).count();
     const double meanPairs = interactionSamples_/nInteractionSamples_;
+    const int passes = model_.timeScheme == timeSchemeType::verlet ? 1 : 2;
     log_<< "Run summary: " << stepsRun_ << " steps of "
         << particles_.size() << " particles in " << str(seconds, 4)
         << " s wall clock (plus " << str(outputSeconds, 4)
         << " s writing and logging)\n"
         << "    " << str(particleSteps_/seconds/1e6, 4)
         << " M particle-steps/s, "
-        << str(2*meanPairs*stepsRun_/seconds/1e9, 4)
+        << str(passes*meanPairs*stepsRun_/seconds/1e9, 4)
         << " G interactions/s (" << str(meanPairs/std::max<label>(1,
-            particles_.size()), 4) << " neighbours per particle, 2 force"
-           " passes per step), " << openmpThreads() << " threads\n";
+            particles_.size()), 4) << " neighbours per particle, "
+        << passes << " force pass" << (passes > 1 ? "es" : "")
+        << " per step), " << openmpThreads() << " threads\n";
     if (gpu_)
     {
         const gpuInfo info = cudaDeviceInfo();

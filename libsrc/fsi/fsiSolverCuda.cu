@@ -53,6 +53,7 @@ struct cudaParticleStore
     const bool withSps;
     const bool withShifting;
     const bool withLink;
+    const bool withPrevious;
 
     // The particles: n in use; buffers are never shrunk, as particles
     // only leave.
@@ -64,6 +65,8 @@ struct cudaParticleStore
     deviceBuffer<symmTensor> tau;
     deviceBuffer<vec3> shiftGradient;
     deviceBuffer<scalar> divR;
+    deviceBuffer<vec3> velocityPrevious;   // Verlet only
+    deviceBuffer<scalar> rhoPrevious;
 
     // The cell list and the per-step flags.
     cellGrid grid;
@@ -84,6 +87,7 @@ struct cudaParticleStore
         withSps(sps),
         withShifting(shifting),
         withLink(!h.link.empty()),
+        withPrevious(!h.velocityPrevious.empty()),
         n(h.size())
     {
         upload(position, host.position);
@@ -104,6 +108,8 @@ struct cudaParticleStore
         tau.resize(withSps ? n : 0);
         shiftGradient.resize(withShifting ? n : 0);
         divR.resize(withShifting ? n : 0);
+        upload(velocityPrevious, host.velocityPrevious);
+        upload(rhoPrevious, host.rhoPrevious);
 
         // The host's list matches the host's (sorted) particles.
         grid = cells.grid;
@@ -129,7 +135,9 @@ struct cudaParticleStore
             withSps ? tau.data() : nullptr,
             withShifting ? shiftGradient.data() : nullptr,
             withShifting ? divR.data() : nullptr,
-            withLink ? link.data() : nullptr
+            withLink ? link.data() : nullptr,
+            withPrevious ? velocityPrevious.data() : nullptr,
+            withPrevious ? rhoPrevious.data() : nullptr
         };
     }
 
@@ -192,6 +200,15 @@ struct cudaParticleStore
         std::swap(body, newBody);
         std::swap(id, newId);
         std::swap(link, newLink);
+        if (withPrevious)
+        {
+            // Into two step fields that the first gather has just freed.
+            parallelFor(cudaExec{}, nInside, reorderPreviousOp{order.data(),
+                velocityPrevious.data(), acceleration.data(),
+                rhoPrevious.data(), drho.data()});
+            std::swap(velocityPrevious, acceleration);
+            std::swap(rhoPrevious, drho);
+        }
         n = nInside;
     }
 
@@ -246,7 +263,7 @@ struct cudaParticleStore
     void toHost()
     {
         if (coupling) coupling->toHost();
-        host.resize(n, withSps, withShifting);
+        host.resize(n, withSps, withShifting, withPrevious);
         download(position, host.position, n);
         download(velocity, host.velocity, n);
         download(rho, host.rho, n);
@@ -264,6 +281,9 @@ struct cudaParticleStore
         download(tau, host.tau, withSps ? n : 0);
         download(shiftGradient, host.shiftGradient, withShifting ? n : 0);
         download(divR, host.divR, withShifting ? n : 0);
+        download(velocityPrevious, host.velocityPrevious,
+                 withPrevious ? n : 0);
+        download(rhoPrevious, host.rhoPrevious, withPrevious ? n : 0);
         hostCells.grid = grid;
         hostCells.nInside = nInside;
         download(keysOf, hostCells.keys, n);

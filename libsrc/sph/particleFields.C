@@ -8,8 +8,10 @@ namespace sphvcpm
 {
 
 void particleFields::resize(const label n, const bool withSps,
-                            const bool withShifting)
+                            const bool withShifting, const bool withPrevious)
 {
+    velocityPrevious.resize(withPrevious ? n : 0);
+    rhoPrevious.resize(withPrevious ? n : 0);
     position.resize(n);
     velocity.resize(n);
     rho.resize(n);
@@ -76,6 +78,20 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
     rho.resize(n);
     p.resize(n);
     mass.resize(n);
+    if (!velocityPrevious.empty())
+    {
+        // A second gather, into two of the step fields that the first one
+        // has just freed.
+        acceleration.resize(n);
+        drho.resize(n);
+        parallelFor(openmpExec{}, n, reorderPreviousOp{order.data(),
+            velocityPrevious.data(), acceleration.data(),
+            rhoPrevious.data(), drho.data()});
+        velocityPrevious.swap(acceleration);
+        rhoPrevious.swap(drho);
+        velocityPrevious.resize(n);
+        rhoPrevious.resize(n);
+    }
     // Recomputed every step: only the size changes.
     resizeStepFields(n, withSps, withShifting);
 }
@@ -92,7 +108,9 @@ particleView particleFields::view()
         tau.empty() ? nullptr : tau.data(),
         shiftGradient.empty() ? nullptr : shiftGradient.data(),
         divR.empty() ? nullptr : divR.data(),
-        link.empty() ? nullptr : link.data()
+        link.empty() ? nullptr : link.data(),
+        velocityPrevious.empty() ? nullptr : velocityPrevious.data(),
+        rhoPrevious.empty() ? nullptr : rhoPrevious.data()
     };
 }
 
@@ -105,6 +123,7 @@ std::size_t particleFields::bytesPerParticle() const
     if (!tau.empty()) b += sizeof(symmTensor);
     if (!shiftGradient.empty()) b += sizeof(vec3) + sizeof(scalar);
     if (!link.empty()) b += sizeof(label);
+    if (!velocityPrevious.empty()) b += sizeof(vec3) + sizeof(scalar);
     return b;
 }
 

@@ -45,6 +45,12 @@ std::string viscosityName(const viscosityType v)
     return v == viscosityType::laminar ? "laminar" : "artificial";
 }
 
+std::string timeSchemeName(const timeSchemeType t)
+{
+    return t == timeSchemeType::verlet ? "verlet" : "symplectic";
+}
+
+
 std::string shiftingName(const shiftingType s)
 {
     return s == shiftingType::none ? "none" : "fickian";
@@ -126,7 +132,7 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
                                              true);
         dict.checkKeywords({"kernel", "hOverDp", "cellDivisor",
             "densityDiffusion", "viscosity", "shifting", "boundary",
-            "domain", "initialDensity"});
+            "domain", "initialDensity", "timeScheme"});
 
         m.kernel = dict.getWordOrDefault("kernel",
             {"wendlandC2", "cubicSpline"}, "wendlandC2") == "wendlandC2"
@@ -210,6 +216,31 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
                     " (1 is the default; 0 turns the push off)");
             }
         }
+        const std::string scheme = typeOf(dict, "timeScheme",
+            {"symplectic", "verlet"}, "symplectic", &sub);
+        m.timeScheme = scheme == "verlet"
+          ? timeSchemeType::verlet : timeSchemeType::symplectic;
+        if (sub)
+        {
+            sub->checkKeywords({"type", "verletSteps"});
+            if (m.timeScheme == timeSchemeType::verlet)
+            {
+                m.verletSteps = sub->getOrDefault<label>("verletSteps", 40);
+                if (m.verletSteps < 1)
+                {
+                    sub->fatalAt("verletSteps", "verletSteps must be a"
+                        " positive number of steps (40 is usual)");
+                }
+            }
+        }
+        if (m.timeScheme == timeSchemeType::verlet
+         && m.shifting != shiftingType::none)
+        {
+            dict.fatalAt("timeScheme", "shifting moves particles in the"
+                " symplectic corrector: use timeScheme symplectic with"
+                " shifting");
+        }
+
         m.hydrostaticStart = dict.getWordOrDefault("initialDensity",
             {"hydrostatic", "asRead"}, "hydrostatic") == "hydrostatic";
 

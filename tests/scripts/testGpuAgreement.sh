@@ -1,6 +1,7 @@
 #!/bin/bash
 # CPU and GPU agree: the coarse 2D dam break, the 3D dam break tutorial and
-# the 2D and 3D elastic gates run a short time with -device cpu and -device cuda,
+# the 2D and 3D elastic gates (the 2D cases with both time schemes) run a
+# short time with -device cpu and -device cuda,
 # and their fields and function-object histories are compared. The two
 # sum a particle's neighbours in another order (each pair once on the
 # host, per particle on the GPU), so they agree to round-off grown over
@@ -14,16 +15,17 @@ skipWithoutGpu "the CPU-GPU agreement"
 # within <a> <b> <tolerance>: |a - b| <= tolerance (numbers from awk)
 within() { awk -v d="$1" -v t="$2" 'BEGIN { exit !(d == d + 0 && d <= t) }'; }
 
-# runBoth <name> <case source> <endTime>: the case run to endTime on each
-# device, ascii at 17 digits, written only at the end.
+# runBoth <name> <case source> <endTime> [<time scheme>]: the case run to
+# endTime on each device, ascii at 17 digits, written only at the end.
 runBoth()
 {
-    local name=$1 source=$2 end=$3 d
+    local name=$1 source=$2 end=$3 scheme=${4:-} d
     for d in cpu cuda; do
         cp -r "$source" "$scratch/$name.$d"
         rm -rf "$scratch/$name.$d"/[0-9]* "$scratch/$name.$d/postProcessing"
         sed -i "s/^endTime .*/endTime         $end;/; s/^writeInterval .*/writeInterval   $end;/; s/^writeFormat .*/writeFormat     ascii;/; s/^writePrecision .*/writePrecision  17;/" \
             "$scratch/$name.$d/system/controlDict"
+        [ -z "$scheme" ] || echo "timeScheme $scheme;" >> "$scratch/$name.$d/system/sphSchemes"
         (cd "$scratch/$name.$d" && generateParticles > log.generateParticles 2>&1 \
             && sphVcpmFsi -device $d > log.sphVcpmFsi 2>&1)
         check "$name: the $d run succeeds" grep -q '^End' "$scratch/$name.$d/log.sphVcpmFsi"
@@ -81,6 +83,13 @@ compareFields damBreak2D 0.1 position 1e-7 U 1e-5 rho 1e-3 p 1e-1
 compareHistory damBreak2D energy/0/energy.dat 1e-6
 compareHistory damBreak2D wallForce/0/force.dat 1e-4
 
+# The same with the Verlet time scheme.
+runBoth damBreak2DVerlet "$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D" 0.1 verlet
+expectIn "damBreak2DVerlet: the GPU ran the Verlet scheme" \
+    "$scratch/damBreak2DVerlet.cuda/log.sphVcpmFsi" 'time scheme verlet'
+compareFields damBreak2DVerlet 0.1 position 1e-7 U 1e-5 rho 1e-3 p 1e-1
+compareHistory damBreak2DVerlet energy/0/energy.dat 1e-6
+
 # 3D dam break tutorial (about 170,000 particles): 0.02 s.
 runBoth damBreak3D "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreak3D" 0.02
 compareFields damBreak3D 0.02 position 1e-7 U 1e-5 rho 1e-3 p 1e-1
@@ -90,6 +99,11 @@ compareFields damBreak3D 0.02 position 1e-7 U 1e-5 rho 1e-3 p 1e-1
 runBoth gate2D "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreakElasticGate2D" 0.05
 compareFields gate2D 0.05 position 1e-7 U 1e-5 rho 1e-3 p 1e-1 displacement 1e-8
 compareHistory gate2D gateTip/0/displacement.dat 1e-4
+
+# The 2D gate with the Verlet scheme: the solid sub-cycled over whole steps.
+runBoth gate2DVerlet "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreakElasticGate2D" 0.05 verlet
+compareFields gate2DVerlet 0.05 position 1e-7 U 1e-5 rho 1e-3 p 1e-1 displacement 1e-8
+compareHistory gate2DVerlet gateTip/0/displacement.dat 1e-4
 
 # The 3D gate (simple cubic lattice, 16,000 solid particles): 0.01 s.
 runBoth gate3D "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreakElasticGate3D" 0.01

@@ -6,57 +6,70 @@
 # a restart, so the runs agree to round-off (grown over the 150 steps after
 # the restart), not bit for bit; a restart that lost or changed any state
 # (velocity, density, time step, speed of sound) differs by far more.
-# The same for a coupled run: the dam break against an elastic plate
-# (stopped at 0.3 s, after the water reached it, continued to 0.32 s).
+# Both time schemes (symplectic, Verlet). The same for a coupled run: the
+# dam break against an elastic plate (stopped at 0.3 s, after the water
+# reached it, continued to 0.32 s).
 . "$(dirname "$0")/testLib.sh"
 . "$(dirname "$0")/fieldTools.sh"
 
 source="$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D"
 setEnd() { sed -i "s/^endTime .*/endTime         $2;/" "$1/system/controlDict"; }
 
-for c in whole halves; do
-    cp -r "$source" "$scratch/$c"
-    sed -i 's/^writeFormat .*/writeFormat     ascii;/; s/^writePrecision .*/writePrecision  17;/; s/^writeInterval .*/writeInterval   0.01;/' \
-        "$scratch/$c/system/controlDict"
-    (cd "$scratch/$c" && generateParticles > log.generateParticles 2>&1)
-done
+# restartPair <scheme>: the dam break run whole and in two halves with the
+# time scheme of system/sphSchemes (the Verlet scheme takes an Euler step
+# after each write, so that a restart repeats the steps it continues).
+restartPair()
+{
+    local scheme=$1 whole="$scratch/whole.$1" halves="$scratch/halves.$1"
+    local c a b body d tol
+    for c in "$whole" "$halves"; do
+        cp -r "$source" "$c"
+        sed -i 's/^writeFormat .*/writeFormat     ascii;/; s/^writePrecision .*/writePrecision  17;/; s/^writeInterval .*/writeInterval   0.01;/' \
+            "$c/system/controlDict"
+        echo "timeScheme $scheme;" >> "$c/system/sphSchemes"
+        (cd "$c" && generateParticles > log.generateParticles 2>&1)
+    done
 
-setEnd "$scratch/whole" 0.06
-(cd "$scratch/whole" && sphVcpmFsi > log.sphVcpmFsi 2>&1)
-check "uninterrupted run to 0.06 s succeeds" grep -q '^End' "$scratch/whole/log.sphVcpmFsi"
+    setEnd "$whole" 0.06
+    (cd "$whole" && sphVcpmFsi > log.sphVcpmFsi 2>&1)
+    check "$scheme: uninterrupted run to 0.06 s succeeds" grep -q '^End' "$whole/log.sphVcpmFsi"
+    expectIn "$scheme: the log names the scheme" "$whole/log.sphVcpmFsi" "time scheme $scheme"
 
-setEnd "$scratch/halves" 0.05
-(cd "$scratch/halves" && sphVcpmFsi > log.first 2>&1)
-check "first half to 0.05 s succeeds" grep -q '^End' "$scratch/halves/log.first"
-setEnd "$scratch/halves" 0.06
-(cd "$scratch/halves" && sphVcpmFsi > log.second 2>&1)
-check "second half succeeds" grep -q '^End' "$scratch/halves/log.second"
-expectIn "second half starts from the latest time" "$scratch/halves/log.second" \
-    '^Reading time 0.05'
-check "second half writes function objects under the restart time" \
-    [ -f "$scratch/halves/postProcessing/energy/0.05/energy.dat" ]
+    setEnd "$halves" 0.05
+    (cd "$halves" && sphVcpmFsi > log.first 2>&1)
+    check "$scheme: first half to 0.05 s succeeds" grep -q '^End' "$halves/log.first"
+    setEnd "$halves" 0.06
+    (cd "$halves" && sphVcpmFsi > log.second 2>&1)
+    check "$scheme: second half succeeds" grep -q '^End' "$halves/log.second"
+    expectIn "$scheme: second half starts from the latest time" "$halves/log.second" \
+        '^Reading time 0.05'
+    check "$scheme: second half writes function objects under the restart time" \
+        [ -f "$halves/postProcessing/energy/0.05/energy.dat" ]
 
+    a=$(timeEntry "$whole" index); b=$(timeEntry "$halves" index)
+    check "$scheme: the same number of steps ($a, $b)" [ "$a" = "$b" ]
+    a=$(timeEntry "$whole" deltaT); b=$(timeEntry "$halves" deltaT)
+    check "$scheme: the same last time step ($a, $b)" \
+        awk -v a="$a" -v b="$b" 'BEGIN { d = (a - b)/a; exit !(d < 1e-9 && d > -1e-9) }'
+
+    # Float round-off (rho of 1000 has ulps of 6e-5) grows over the same steps.
+    tol=1e-9
+    singleBuild "$whole/log.sphVcpmFsi" && tol=1e-3
+    for body in water box; do
+        bodyTable "$whole/0.06" $body position U rho > "$scratch/a.$body"
+        bodyTable "$halves/0.06" $body position U rho > "$scratch/b.$body"
+        check "$scheme: $body has the same particles" \
+            [ -s "$scratch/a.$body" -a "$(wc -l < "$scratch/a.$body")" = "$(wc -l < "$scratch/b.$body")" ]
+        d=$(maxDifference "$scratch/a.$body" "$scratch/b.$body")
+        # The order of particles sharing a cell can differ after a restart, so
+        # sums are added in another order: round-off, nothing more.
+        check "$scheme: $body: restarted fields equal the uninterrupted ones (max |diff| $d)" \
+            awk -v d="$d" -v tol=$tol 'BEGIN { exit !(d == d + 0 && d < tol) }'
+    done
+}
 timeEntry() { awk -v k=$2 '$1 == k { sub(";", "", $2); print $2 }' "$1/0.06/uniform/time"; }
-a=$(timeEntry "$scratch/whole" index); b=$(timeEntry "$scratch/halves" index)
-check "the same number of steps ($a, $b)" [ "$a" = "$b" ]
-a=$(timeEntry "$scratch/whole" deltaT); b=$(timeEntry "$scratch/halves" deltaT)
-check "the same last time step ($a, $b)" \
-    awk -v a="$a" -v b="$b" 'BEGIN { d = (a - b)/a; exit !(d < 1e-9 && d > -1e-9) }'
-
-# Float round-off (rho of 1000 has ulps of 6e-5) grows over the same steps.
-tol=1e-9
-singleBuild "$scratch/whole/log.sphVcpmFsi" && tol=1e-3
-for body in water box; do
-    bodyTable "$scratch/whole/0.06" $body position U rho > "$scratch/a.$body"
-    bodyTable "$scratch/halves/0.06" $body position U rho > "$scratch/b.$body"
-    check "$body has the same particles" \
-        [ -s "$scratch/a.$body" -a "$(wc -l < "$scratch/a.$body")" = "$(wc -l < "$scratch/b.$body")" ]
-    d=$(maxDifference "$scratch/a.$body" "$scratch/b.$body")
-    # The order of particles sharing a cell can differ after a restart, so
-    # sums are added in another order: round-off, nothing more.
-    check "$body: restarted fields equal the uninterrupted ones (max |diff| $d)" \
-        awk -v d="$d" -v tol=$tol 'BEGIN { exit !(d == d + 0 && d < tol) }'
-done
+restartPair symplectic
+restartPair verlet
 
 # The coupled case: damBreakSmall2D with a rubber plate in the water's way.
 fsi="$scratch/fsiSource"

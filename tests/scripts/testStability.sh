@@ -1,9 +1,10 @@
 #!/bin/bash
 # Stability suite (coarse, for CI): a violent dam break in a closed box run
 # to ten times its impact time, a long hydrostatic run, dam breaks with a
-# low and a high speed of sound, and short dam breaks with each selectable
-# model switched on. Each must end normally with no NaN, no
-# fluid particle through a wall or removed, the fluid mass conserved
+# low and a high speed of sound, short dam breaks with each selectable
+# model switched on, and the first two again with the Verlet time scheme.
+# Each must end normally with no NaN, no fluid particle through a wall or
+# removed, the fluid mass conserved
 # exactly and the mechanical energy (kinetic + potential above the floor)
 # never above its start by more than 1 %.
 . "$(dirname "$0")/testLib.sh"
@@ -116,6 +117,30 @@ expect="viscosity laminar .*turbulence SPS"
 variant sps viscosity "{ type laminar; }" system/sphSchemes turbulence SPS constant/fluidProperties
 expect="shifting fickian"
 variant shifting shifting "{ type fickian; }" system/sphSchemes
+
+# 5. The Verlet time scheme: the violent dam break to ten times its impact
+#    time, and the long hydrostatic run.
+for base in violentDamBreak longHydrostatic; do
+    name="${base}Verlet"
+    if [ $base = violentDamBreak ]; then
+        prepare $name "$damBreak" 0.02 3.2 0.4
+    else
+        prepare $name "$tank" 0.02 3 1
+    fi
+    echo "timeScheme verlet;" >> "$scratch/$name/system/sphSchemes"
+    run $name
+    expectIn "$name: the log names the scheme" "$scratch/$name/log.sphVcpmFsi" \
+        'time scheme verlet'
+    if [ $base = violentDamBreak ]; then
+        checkRun $name 0.8 0.5 0.02 postProcessing/energy/0/energy.dat
+    else
+        checkRun $name 1 0.8 0.02 postProcessing/energy/0/energy.dat
+    fi
+done
+drift=$(awk '!/^#/ { if (n++ == 0) h0 = $2; h = $2 } END { printf "%.4g\n", (h - h0)/0.02 }' \
+    "$scratch/longHydrostaticVerlet/postProcessing/surface/0/height.dat")
+check "longHydrostaticVerlet: surface drift $drift dp (limit 0.5 dp)" \
+    awk -v d="$drift" 'BEGIN { exit !(d == d + 0 && d < 0.5 && d > -0.5) }'
 
 expectIn "the low speed of sound is warned about" "$scratch/soundSpeed10/log.sphVcpmFsi" \
     'speed of sound c0 = .* is below'

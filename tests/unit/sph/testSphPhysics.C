@@ -5,8 +5,8 @@
 // normalisation and gradients, lattice sums, the Tait equation of state,
 // the fluid rates on a block of particles (rest state, uniform pressure,
 // hydrostatic pressure and density, momentum and mass conservation,
-// laminar viscosity on linear and parabolic shear) and the symplectic
-// predictor/corrector.
+// laminar viscosity on linear and parabolic shear), the symplectic
+// predictor/corrector and the Verlet step.
 
 #include "cellList.H"
 #include "fluidInteractions.H"
@@ -1137,4 +1137,161 @@ TEST(symplectic, correctorReportsBadParticles)
     s.f.drho[0] = -3*rho0/s.dt;
     s.f.rho0[0] = rho0;
     EXPECT_EQ(s.correct(), 5);
+}
+
+
+// * * * * * * * * * * * * * * * * * Verlet  * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+label verletStep(particleFields& f, const taitEquationOfState& eos,
+                 const vec3& g, const scalar dt, const scalar span)
+{
+    const label n = f.size();
+    return parallelReduce(serialExec{}, n, verletOp{f.view(), eos, g, dt,
+        span}, n, minOp());
+}
+
+} // End anonymous namespace
+
+// Constant acceleration and density rate: the Euler step and the Verlet
+// step over a span of two steps are both exact (dyadic values: ==), and
+// each keeps the state it started from as the previous one. A wall
+// particle is left alone.
+TEST(verlet, constantAccelerationDyadic)
+{
+    const taitEquationOfState eos{rho0, c0, 7};
+    particleFields f;
+    f.resize(2, false, false, true);
+    const vec3 g{0, -8, 0.5};
+    const scalar dt = 1.0/64;
+    const vec3 x0{0.25, 0.5, 0.75}, v0{1.5, -0.5, 0.25}, a{2, -4, 0.5};
+    for (label k = 0; k < 2; ++k)
+    {
+        f.position[k] = x0;
+        f.velocity[k] = v0;
+        f.acceleration[k] = a;
+        f.rho[k] = 1000;
+        f.drho[k] = 64;
+        f.mass[k] = 1;
+        f.kind[k] = k == 1 ? wallKind : fluidKind;
+    }
+    const vec3 ag = a + g;
+    // Euler step (span 0): t = dt.
+    EXPECT_EQ(verletStep(f, eos, g, dt, 0), 2);
+    EXPECT_EQ(f.position[0], x0 + dt*v0 + (0.5*dt*dt)*ag);
+    EXPECT_EQ(f.velocity[0], v0 + dt*ag);
+    EXPECT_EQ(f.rho[0], 1000 + dt*64);
+    EXPECT_EQ(f.velocityPrevious[0], v0);
+    EXPECT_EQ(f.rhoPrevious[0], 1000);
+    EXPECT_EQ(f.p[0], eos.pressure(f.rho[0]));
+    // Verlet step over the span of two steps: t = 2 dt.
+    EXPECT_EQ(verletStep(f, eos, g, dt, 2*dt), 2);
+    EXPECT_EQ(f.position[0], x0 + (2*dt)*v0 + (2*dt*dt)*ag);
+    EXPECT_EQ(f.velocity[0], v0 + (2*dt)*ag);
+    EXPECT_EQ(f.rho[0], 1000 + 2*dt*64);
+    EXPECT_EQ(f.velocityPrevious[0], v0 + dt*ag);
+    EXPECT_EQ(f.rhoPrevious[0], 1000 + dt*64);
+    EXPECT_EQ(f.position[1], x0);
+    EXPECT_EQ(f.velocity[1], v0);
+    EXPECT_EQ(f.rho[1], 1000);
+    // A density driven below zero is reported, a wall's never.
+    f.drho[0] = -1e6;
+    f.drho[1] = -1e6;
+    EXPECT_EQ(verletStep(f, eos, g, dt, 2*dt), 0);
+    f.kind[0] = wallKind;
+    EXPECT_EQ(verletStep(f, eos, g, dt, 2*dt), 2);
+}
+
+// Many steps of varying size under constant acceleration, an Euler step
+// every 40: the parabola to round-off, as the symplectic scheme.
+TEST(verlet, constantAccelerationVaryingSteps)
+{
+    std::mt19937_64 gen(11);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    const taitEquationOfState eos{rho0, c0, 7};
+    particleFields f;
+    f.resize(50, false, false, true);
+    const vec3 g{0.1, -9.81, 0.3};
+    std::vector<vec3> x0(50), v0(50), a(50);
+    for (label k = 0; k < 50; ++k)
+    {
+        x0[k] = {u(gen), u(gen), u(gen)};
+        v0[k] = {u(gen), u(gen), u(gen)};
+        a[k] = {10*u(gen), 10*u(gen), 10*u(gen)};
+        f.position[k] = x0[k];
+        f.velocity[k] = v0[k];
+        f.rho[k] = rho0;
+        f.drho[k] = 0;
+        f.mass[k] = 1;
+        f.kind[k] = fluidKind;
+    }
+    scalar T = 0, dtBefore = 0;
+    for (int step = 0; step < 100; ++step)
+    {
+        const scalar dt = 1.7e-3*(1 + 0.3*u(gen));
+        for (label k = 0; k < 50; ++k) f.acceleration[k] = a[k];
+        ASSERT_EQ(verletStep(f, eos, g, dt,
+                             step % 40 == 0 ? 0 : dtBefore + dt), 50);
+        T += dt;
+        dtBefore = dt;
+    }
+    for (label k = 0; k < 50; ++k)
+    {
+        const vec3 ag = a[k] + g;
+        const vec3 v = v0[k] + T*ag;
+        const vec3 x = x0[k] + T*v0[k] + (0.5*T*T)*ag;
+        const scalar rel = test::tol(1e-13, 1e-5);
+        EXPECT_LT(mag(f.velocity[k] - v), rel*(mag(v0[k]) + T*mag(ag)));
+        EXPECT_LT(mag(f.position[k] - x),
+                  rel*(mag(x0[k]) + T*mag(v0[k]) + T*T*mag(ag)));
+        EXPECT_EQ(f.rho[k], rho0);
+    }
+}
+
+// A harmonic oscillator (a = -w^2 x): the Verlet scheme keeps its energy
+// bounded and its period to second order, with an Euler step every 40
+// steps (these add a first-order error of their own, small at 40).
+TEST(verlet, harmonicOscillatorPeriod)
+{
+    const taitEquationOfState eos{rho0, c0, 7};
+    particleFields f;
+    f.resize(1, false, false, true);
+    f.kind[0] = fluidKind;
+    f.mass[0] = 1;
+    f.rho[0] = rho0;
+    f.drho[0] = 0;
+    const scalar w = 2*M_PI;       // period 1
+    const vec3 g{0, 0, 0};
+    f.position[0] = {1, 0, 0};
+    f.velocity[0] = {0, 0, 0};
+    const int perPeriod = 200;
+    const scalar dt = scalar(1)/perPeriod;
+    scalar eMax = 0, eMin = 1e30, lastX = 1;
+    int step = 0;
+    std::vector<scalar> crossings;      // downward zero crossings of x
+    for (; step < 20*perPeriod; ++step)
+    {
+        f.acceleration[0] = -w*w*f.position[0];
+        verletStep(f, eos, g, dt, step % 40 == 0 ? 0 : 2*dt);
+        const scalar x = f.position[0].x;
+        if (lastX > 0 && x <= 0)
+        {
+            crossings.push_back((step + lastX/(lastX - x))*dt);
+        }
+        lastX = x;
+        // Energy at the step's own time (v^{n+1} and x^{n+1}).
+        const scalar e = 0.5*magSqr(f.velocity[0])
+                       + 0.5*w*w*magSqr(f.position[0]);
+        eMax = std::max(eMax, e);
+        eMin = std::min(eMin, e);
+    }
+    ASSERT_GE(crossings.size(), 19u);
+    const scalar period = (crossings.back() - crossings.front())
+                         /(crossings.size() - 1);
+    EXPECT_NEAR(period, 1, 2e-3);
+    const scalar e0 = 0.5*w*w;
+    EXPECT_LT(eMax, 1.02*e0);
+    EXPECT_GT(eMin, 0.98*e0);
 }
