@@ -108,6 +108,27 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
               + std::to_string(model_.verletSteps) + " steps and after"
               " each write)"
             : std::string(" (two force passes a step)")) << "\n";
+    if (model_.timeScheme == timeSchemeType::verlet)
+    {
+        // The leapfrog centres density diffusion, which then grows between
+        // the Euler steps by about 2 delta maxCo a step (docs/solver.md).
+        const bool adaptive = control_.adjustTimeStep;
+        if (model_.verletSteps > 40 || !adaptive || control_.maxCo > 0.2
+         || (model_.densityDiffusion != densityDiffusionType::none
+          && model_.delta > 0.1))
+        {
+            warning("timeScheme verlet was found stable with verletSteps"
+                " <= 40, maxCo <= 0.2 (adjustTimeStep yes) and delta <= 0.1;"
+                " this case has verletSteps " + std::to_string(
+                model_.verletSteps) + ", maxCo " + str(control_.maxCo)
+                + (adaptive ? "" : " (adjustTimeStep no)") + " and delta "
+                + str(model_.delta) + ". Beyond them density diffusion grows"
+                " between the Euler steps: in a small dam break verletSteps"
+                " 60, delta 0.2, and maxCo 0.4 even with verletSteps 20 each"
+                " blew up. Use timeScheme symplectic for larger steps",
+                (caseDir_/"system/sphSchemes").string());
+        }
+    }
     if (coupling_ && hasWalls_)
     {
         log_<< "    solid-wall contact: hard, at a gap of dp_s/2 to the nearest"
@@ -668,6 +689,12 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
     msg << "Usual causes: a time step too large for the forces (lower maxCo"
            " or maxDeltaT), a speed of sound too low for the impact"
            " (raise c0), or particles packed too closely at the start.";
+    if (model_.timeScheme == timeSchemeType::verlet)
+    {
+        msg << " With timeScheme verlet, density diffusion grows between its"
+               " Euler steps: keep verletSteps <= 40, maxCo <= 0.2 and delta"
+               " <= 0.1, or use timeScheme symplectic.";
+    }
     fatalError(msg.str());
 }
 

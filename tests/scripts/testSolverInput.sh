@@ -72,6 +72,24 @@ fresh; sed -i 's/^boundary .*/boundary { type adami; contact 0; }/' "$scratch/c/
 (cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
 expectIn "contact 0: the log says the push is off" "$scratch/c/log.solver" "contact push off"
 
+# The time scheme: an unknown one, a non-positive verletSteps, and Verlet
+# with shifting (whose shift lives in the symplectic corrector).
+fresh; echo "timeScheme leapfrog;" >> "$scratch/c/system/sphSchemes"
+expectFatal "unknown time scheme" "leapfrog" "symplectic" "verlet" "sphSchemes"
+fresh; echo "timeScheme { type verlet; verletSteps 0; }" >> "$scratch/c/system/sphSchemes"
+expectFatal "verletSteps 0" "verletSteps must be a positive number" "sphSchemes"
+fresh; echo "timeScheme { type verlet; verletSteps 60; }" >> "$scratch/c/system/sphSchemes"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+expectIn "verletSteps 60: a warning naming the tested limits" "$scratch/c/log.solver" \
+    "timeScheme verlet was found stable with verletSteps <= 40"
+fresh; echo "timeScheme verlet;" >> "$scratch/c/system/sphSchemes"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+check "timeScheme verlet with the defaults: no warning" \
+    bash -c "! grep -q 'Warning' '$scratch/c/log.solver'"
+fresh; sed -i 's/^shifting .*/shifting { type fickian; }/' "$scratch/c/system/sphSchemes"
+echo "timeScheme verlet;" >> "$scratch/c/system/sphSchemes"
+expectFatal "Verlet with shifting" "use timeScheme symplectic with shifting" "sphSchemes"
+
 fresh; sed -i 's/^rho0 .*/rho0 -1000;/' "$scratch/c/constant/fluidProperties"
 expectFatal "negative rho0" "rho0" "fluidProperties"
 
