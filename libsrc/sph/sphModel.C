@@ -147,8 +147,10 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
         }
         m.h = m.hOverDp*dp;
 
-        m.cellDivisor = dict.getOrDefault<label>("cellDivisor", 2);
-        if (m.cellDivisor < 1 || m.cellDivisor > 4)
+        // 0: by device (the solver picks 2 on the CPU, 3 on the GPU)
+        m.cellDivisor = dict.getOrDefault<label>("cellDivisor", 0);
+        if (dict.found("cellDivisor")
+         && (m.cellDivisor < 1 || m.cellDivisor > 4))
         {
             dict.fatalAt("cellDivisor",
                 "cellDivisor must be 1, 2, 3 or 4 (cells of 2h/cellDivisor)");

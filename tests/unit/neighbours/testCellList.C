@@ -4,7 +4,7 @@
 // The cell-linked list against brute force, in 2D and 3D: uniform and
 // clustered clouds, particles exactly on cell faces (dyadic and decimal
 // cell sizes), particles outside the grid and non-finite positions, cell
-// divisors 1 and 2, serial and OpenMP builds (which must agree exactly),
+// divisors 1, 2 and 3 (the GPU's default), serial and OpenMP builds (which must agree exactly),
 // the kind ranges and the walks of one kind, and the errors of
 // makeCellGrid.
 
@@ -325,11 +325,11 @@ void checkList(const cellList& list, const std::vector<vec3>& x0,
     }
 }
 
-// Builds the lists of one cloud for divisors 1 and 2 with both host
+// Builds the lists of one cloud for divisors 1, 2 and 3 with both host
 // backends, checks each and compares them.
 void checkCloud(const cloud& c)
 {
-    for (const int divisor : {1, 2})
+    for (const int divisor : {1, 2, 3})
     {
         SCOPED_TRACE(c.name + ", " + std::to_string(c.nDim) + "D, divisor "
                      + std::to_string(divisor));
@@ -489,7 +489,7 @@ TEST(cellList, largeCloudSerialEqualsOpenmp)
     addOutside(c);
     std::shuffle(c.x.begin(), c.x.end(), gen);
     const label n = label(c.x.size());
-    for (const int divisor : {1, 2})
+    for (const int divisor : {1, 2, 3})
     {
         const cellGrid g = makeCellGrid(c.lower, c.upper, c.support,
                                         divisor, 3);
@@ -548,7 +548,7 @@ TEST(cellList, kindRangesAndWalks)
         std::uniform_int_distribution<int> pickKind(0, 2);
         for (auto& k : kind) k = std::uint8_t(pickKind(gen));
 
-        for (const int divisor : {1, 2})
+        for (const int divisor : {1, 2, 3})
         {
             const cellGrid g = makeCellGrid(c.lower, c.upper, c.support,
                                             divisor, nDim);

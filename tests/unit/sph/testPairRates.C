@@ -4,7 +4,7 @@
 // The host's pair form of the fluid rates (each pair once, pairRates.H)
 // against the gather form (fluidRatesOp, each particle sums all its
 // neighbours) on disordered clouds of fluid over wall layers, 2D and 3D,
-// both kernels, cells of 2h and h, laminar and artificial viscosity, SPS
+// both kernels, cells of 2h, h and 2h/3, laminar and artificial viscosity, SPS
 // on and off: the accelerations, density rates and viscous step terms agree
 // to round-off, and the pair form gives the same bits serial and threaded.
 // Wall particles out of reach of the fluid (nearFluidOp) are skipped. The
@@ -262,7 +262,7 @@ TEST(pairRates, equalsGatherForm)
 {
     for (const int nDim : {2, 3})
     {
-        for (const int divisor : {1, 2})
+        for (const int divisor : {1, 2, 3})
         {
             for (const bool sps : {false, true})
             {
@@ -279,7 +279,7 @@ TEST(pairRates, solidReactionConservesMomentum)
 {
     for (const int nDim : {2, 3})
     {
-        for (const int divisor : {1, 2})
+        for (const int divisor : {1, 2, 3})
         {
             compareSolid<wendlandC2Kernel>(nDim, divisor, false, true);
             compareSolid<wendlandC2Kernel>(nDim, divisor, true, false);
