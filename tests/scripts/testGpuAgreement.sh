@@ -4,7 +4,8 @@
 # short time with -device cpu and -device cuda,
 # and their fields and function-object histories are compared. The two
 # sum a particle's neighbours in another order (each pair once on the
-# host, per particle on the GPU), so they agree to round-off grown over
+# host, per particle on the GPU; cells of h and of 2h/3 by default), so
+# they agree to round-off grown over
 # the steps run, not bit for bit; a wrong term on either side differs by
 # orders of magnitude more. Skipped (77) where no GPU can be used.
 . "$(dirname "$0")/testLib.sh"
