@@ -24,6 +24,23 @@ namespace sphvcpm
 
 namespace fs = std::filesystem;
 
+namespace
+{
+
+// The settings at which timeScheme verlet was found stable
+// (docs/solver.md, Time schemes): beyond them density diffusion grows
+// between its Euler steps.
+constexpr int verletTestedSteps = 40;
+constexpr double verletTestedMaxCo = 0.2;
+constexpr double verletTestedDelta = 0.1;
+
+const std::string verletTestedLimits = "verletSteps <= "
+    + std::to_string(verletTestedSteps) + ", maxCo <= "
+    + fsiFormat::str(verletTestedMaxCo) + " (adjustTimeStep yes) and delta <= "
+    + fsiFormat::str(verletTestedDelta);
+
+} // End anonymous namespace
+
 using fsiFormat::str;
 
 
@@ -69,22 +86,13 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
             " $SPHVCPM_DEVICE or the device entry of system/controlDict)");
     }
     readStartTime();
-    if (model_.cellDivisor == 0)
-    {
-        // Cells of 2h/3 walk fewer candidates per neighbour: on the GPU
-        // 1.2-1.35 times faster than cells of h in 3D; on the CPU, where
-        // each candidate costs less than a cell's bookkeeping, not
-        // (docs/benchmarks.md).
-        model_.cellDivisor = chosen == "cuda" ? 3 : 2;
-        cellDivisorByDevice_ = true;
-    }
     setSoundSpeed();
     eos_ = taitEquationOfState(model_.rho0, model_.c0, model_.gamma);
     if (freshStart_ && model_.hydrostaticStart)
     {
         setHydrostaticDensity();
     }
-    setDomain();
+    setDomain(chosen == "cuda");
 
     log_<< "Fluid model\n"
         << "    kernel " << kernelName(model_.kernel)
@@ -122,12 +130,13 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         // The leapfrog centres density diffusion, which then grows between
         // the Euler steps by about 2 delta maxCo a step (docs/solver.md).
         const bool adaptive = control_.adjustTimeStep;
-        if (model_.verletSteps > 40 || !adaptive || control_.maxCo > 0.2
+        if (model_.verletSteps > verletTestedSteps || !adaptive
+         || control_.maxCo > verletTestedMaxCo
          || (model_.densityDiffusion != densityDiffusionType::none
-          && model_.delta > 0.1))
+          && model_.delta > verletTestedDelta))
         {
-            warning("timeScheme verlet was found stable with verletSteps"
-                " <= 40, maxCo <= 0.2 (adjustTimeStep yes) and delta <= 0.1;"
+            warning("timeScheme verlet was found stable with "
+                + verletTestedLimits + ";"
                 " this case has verletSteps " + std::to_string(
                 model_.verletSteps) + ", maxCo " + str(control_.maxCo)
                 + (adaptive ? "" : " (adjustTimeStep no)") + " and delta "
@@ -493,7 +502,7 @@ void fsiSolver::setHydrostaticDensity()
 }
 
 
-void fsiSolver::setDomain()
+void fsiSolver::setDomain(const bool onGpu)
 {
     vec3 lo, hi;
     if (model_.userDomain)
@@ -558,20 +567,20 @@ void fsiSolver::setDomain()
             }
         }
     }
-    if (cellDivisorByDevice_ && model_.cellDivisor == 3)
+    if (model_.cellDivisor == 0)
     {
-        // Cells of 2h/3 hold about a particle's volume each: in a domain
-        // mostly empty (or too large for the 32-bit cell keys) they would
-        // outnumber the particles many times, and cells of h are kept.
+        // Not given: cells of h on the CPU; on the GPU cells of 2h/3, which
+        // walk fewer candidates per neighbour (1.2-1.35 times faster in
+        // 3D, docs/benchmarks.md), unless, holding about a particle's
+        // volume each, they would far outnumber the particles (a domain
+        // mostly empty, or too large for the 32-bit cell keys).
         double cells = 1;
         for (int d = 0; d < model_.nDimensions; ++d)
         {
             cells *= std::ceil((hi[d] - lo[d])/(2*model_.h/3));
         }
-        if (cells > 16.0*particles_.size() || cells >= double(1 << 29))
-        {
-            model_.cellDivisor = 2;
-        }
+        model_.cellDivisor = onGpu && cells <= 16.0*particles_.size()
+                          && cells < double(1 << 29) ? 3 : 2;
     }
     grid_ = makeCellGrid(lo, hi, 2*model_.h, model_.cellDivisor,
                          model_.nDimensions);
@@ -716,8 +725,8 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
     if (model_.timeScheme == timeSchemeType::verlet)
     {
         msg << " With timeScheme verlet, density diffusion grows between its"
-               " Euler steps: keep verletSteps <= 40, maxCo <= 0.2 and delta"
-               " <= 0.1, or use timeScheme symplectic.";
+               " Euler steps: keep " << verletTestedLimits
+            << ", or use timeScheme symplectic.";
     }
     fatalError(msg.str());
 }
