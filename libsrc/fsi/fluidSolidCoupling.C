@@ -78,7 +78,7 @@ label fluidSolidCoupling::advance(const double t, const scalar dt,
                                   const std::vector<vec3>& force)
 {
     label most = 0;
-    const std::vector<vec3> start = position;
+    const std::vector<point> start = position;
     for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
     {
         vcpmSolid& s = *solids_.bodies()[b].solid;
@@ -181,7 +181,7 @@ void fluidSolidCoupling::useDevice()
 vec3* fluidSolidCoupling::deviceFluidForce() { return nullptr; }
 contactPlane* fluidSolidCoupling::deviceContact() { return nullptr; }
 bool fluidSolidCoupling::collapsedOnDevice(scalar) const { return false; }
-const vec3* fluidSolidCoupling::devicePosition() const { return nullptr; }
+const point* fluidSolidCoupling::devicePosition() const { return nullptr; }
 const vec3* fluidSolidCoupling::deviceMeanVelocity() const { return nullptr; }
 bool fluidSolidCoupling::nonFiniteOnDevice() const { return false; }
 void fluidSolidCoupling::toHost() {}

@@ -37,7 +37,7 @@ void copyOnDevice(deviceBuffer<T>& to, const deviceBuffer<T>& from)
 // The smallest index of a non-finite position (n when none).
 struct firstNonFiniteOp
 {
-    const vec3* position;
+    const point* position;
     label n;
 
     SPHVCPM_HD label operator()(const label i) const
@@ -88,13 +88,15 @@ struct deviceSolids
 {
     std::vector<deviceBonds> bonds;
     // The solids, flat in the coupling's order.
-    deviceBuffer<vec3> position, velocity, force, clampVelocity;
+    deviceBuffer<point> position;
+    deviceBuffer<vec3> velocity, force, clampVelocity;
     deviceBuffer<std::uint8_t> clamped;
     deviceBuffer<scalar> stretchSum;             // 2 per particle
     // The coupling's arrays.
     deviceBuffer<vec3> fluidForce, fluidForceAtStart, heldForce;
-    deviceBuffer<vec3> meanVelocity, halfStart;
-    deviceBuffer<vec3> startPosition, startVelocity, startMeanVelocity;
+    deviceBuffer<vec3> meanVelocity;
+    deviceBuffer<point> halfStart, startPosition;
+    deviceBuffer<vec3> startVelocity, startMeanVelocity;
     deviceBuffer<contactPlane> contact;          // empty without contact
 };
 
@@ -135,8 +137,8 @@ void fluidSolidCoupling::useDevice()
     d.fluidForceAtStart = uploaded(fluidForceAtStart);
     d.heldForce = deviceBuffer<vec3>(n);
     d.meanVelocity = uploaded(meanVelocity);
-    d.halfStart = deviceBuffer<vec3>(n);
-    d.startPosition = deviceBuffer<vec3>(n);
+    d.halfStart = deviceBuffer<point>(n);
+    d.startPosition = deviceBuffer<point>(n);
     d.startVelocity = deviceBuffer<vec3>(n);
     d.startMeanVelocity = deviceBuffer<vec3>(n);
     if (!contact.empty()) d.contact = uploaded(contact);
@@ -155,7 +157,7 @@ contactPlane* fluidSolidCoupling::deviceContact()
 }
 
 
-const vec3* fluidSolidCoupling::devicePosition() const
+const point* fluidSolidCoupling::devicePosition() const
 {
     return device_->position.data();
 }

@@ -409,7 +409,7 @@ void fsiSolver::placeMovingWalls()
         for (label i = 0; i < particles_.size(); ++i)
         {
             if (particles_.body[i] != b) continue;
-            vec3& x = particles_.position[i];
+            point& x = particles_.position[i];
             if (freshStart_) x = T.apply(x);
             particles_.velocity[i] = T.velocityAtPosition(x);
         }
@@ -426,7 +426,7 @@ void fsiSolver::setSoundSpeed()
     for (label i = 0; i < particles_.size(); ++i)
     {
         if (particles_.kind[i] != fluidKind) continue;
-        const scalar z = dot(up, particles_.position[i]);
+        const scalar z = dot(toPoint(up), particles_.position[i]);
         lo = std::min(lo, z);
         hi = std::max(hi, z);
         u2 = std::max(u2, magSqr(particles_.velocity[i]));
@@ -488,13 +488,15 @@ void fsiSolver::setHydrostaticDensity()
     {
         if (particles_.kind[i] != fluidKind) continue;
         scalar& t = top[particles_.body[i]];
-        t = std::max(t, dot(up, particles_.position[i]) + scalar(0.5)*model_.dp);
+        t = std::max(t, scalar(dot(toPoint(up), particles_.position[i]))
+                        + scalar(0.5)*model_.dp);
     }
     for (label i = 0; i < particles_.size(); ++i)
     {
         if (particles_.kind[i] != fluidKind) continue;
         const scalar depth =
-            top[particles_.body[i]] - dot(up, particles_.position[i]);
+            top[particles_.body[i]]
+          - scalar(dot(toPoint(up), particles_.position[i]));
         particles_.rho[i] = eos_.density(model_.rho0*gMag*depth);
     }
     log_<< "Initial fluid density: hydrostatic below the top of each fluid"
@@ -504,17 +506,17 @@ void fsiSolver::setHydrostaticDensity()
 
 void fsiSolver::setDomain(const bool onGpu)
 {
-    vec3 lo, hi;
+    point lo, hi;
     if (model_.userDomain)
     {
-        lo = model_.domainMin;
-        hi = model_.domainMax;
+        lo = toPoint(model_.domainMin);
+        hi = toPoint(model_.domainMax);
     }
     else
     {
         // Bounding box of all particles with a margin; against gravity the
         // box doubles, so that splashes are not lost.
-        const auto grow = [](vec3& l, vec3& h, const vec3& x)
+        const auto grow = [](point& l, point& h, const point& x)
         {
             for (int d = 0; d < 3; ++d)
             {
@@ -522,15 +524,15 @@ void fsiSolver::setDomain(const bool onGpu)
                 h[d] = std::max(h[d], x[d]);
             }
         };
-        lo = vec3{vGreat, vGreat, vGreat};
+        lo = point{vGreat, vGreat, vGreat};
         hi = -lo;
-        for (const vec3& x : particles_.position) grow(lo, hi, x);
+        for (const point& x : particles_.position) grow(lo, hi, x);
         // Moving bodies: their box wherever their motion takes them up to
         // endTime (the box's corners moved, sampled in time).
         for (std::size_t b = 0; b < bodies_.size(); ++b)
         {
             if (!motions_.of(b)) continue;
-            vec3 blo{vGreat, vGreat, vGreat}, bhi = -blo;
+            point blo{vGreat, vGreat, vGreat}, bhi = -blo;
             for (label i = 0; i < particles_.size(); ++i)
             {
                 if (particles_.body[i] != b) continue;
@@ -544,7 +546,7 @@ void fsiSolver::setDomain(const bool onGpu)
                 const bodyMove m = motions_.move(b, time_, t);
                 for (int c = 0; c < 8; ++c)
                 {
-                    const vec3 corner{c & 1 ? bhi.x : blo.x,
+                    const point corner{c & 1 ? bhi.x : blo.x,
                         c & 2 ? bhi.y : blo.y, c & 4 ? bhi.z : blo.z};
                     grow(lo, hi, m.moved(corner));
                 }
@@ -584,8 +586,8 @@ void fsiSolver::setDomain(const bool onGpu)
     }
     grid_ = makeCellGrid(lo, hi, 2*model_.h, model_.cellDivisor,
                          model_.nDimensions);
-    model_.domainMin = lo;
-    model_.domainMax = hi;
+    model_.domainMin = toVec3(lo);
+    model_.domainMax = toVec3(hi);
 }
 
 
@@ -681,7 +683,7 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
         for (label i = 0; i < v.n; ++i)
         {
             if (v.kind[i] != fluidKind) continue;
-            vec3 x = v.position[i] - (0.5*dt)*v.velocity0[i];
+            point x = v.position[i] - (0.5*dt)*v.velocity0[i];
             if (undoCorrector)
             {
                 x -= (0.5*dt)*v.velocity[i];

@@ -58,7 +58,9 @@ struct cudaParticleStore
     // The particles: n in use; buffers are never shrunk, as particles
     // only leave.
     label n = 0;
-    deviceBuffer<vec3> position, velocity, velocity0, acceleration;
+    deviceBuffer<point> position;
+    deviceBuffer<vec3> velocity, velocity0, acceleration;
+    deviceBuffer<point> positionScratch;   // single builds (particleFields.H)
     deviceBuffer<scalar> rho, p, mass, rho0, drho, invRho;
     deviceBuffer<std::uint8_t> kind, body, newKind, newBody;
     deviceBuffer<label> id, link, newId, newLink;
@@ -165,7 +167,7 @@ struct cudaParticleStore
         // Rare (a particle left the domain): the whole arrays come over.
         std::vector<label> o;
         std::vector<std::uint8_t> k, b;
-        std::vector<vec3> x;
+        std::vector<point> x;
         download(order, o, n);
         download(kind, k, n);
         download(body, b, n);
@@ -181,8 +183,11 @@ struct cudaParticleStore
 
     void keepInside(bool, bool)
     {
+        deviceBuffer<point>& newPosition =
+            positionScratchOf(positionScratch, velocity0);
+        point* newPositionData = atLeast(newPosition, n);
         parallelFor(cudaExec{}, nInside, reorderOp{order.data(),
-            position.data(), velocity0.data(),
+            position.data(), newPositionData,
             velocity.data(), acceleration.data(),
             rho.data(), rho0.data(),
             p.data(), drho.data(),
@@ -191,7 +196,7 @@ struct cudaParticleStore
             body.data(), newBody.data(),
             id.data(), newId.data(),
             withLink ? link.data() : nullptr, newLink.data()});
-        std::swap(position, velocity0);
+        std::swap(position, newPosition);
         std::swap(velocity, acceleration);
         std::swap(rho, rho0);
         std::swap(p, drho);

@@ -104,7 +104,7 @@ void prescribedMotions::placeSolids(solidBodySet& solids, const double t)
         vcpmSolid& solid = *s.solid;
         for (label i = 0; i < solid.size(); ++i)
         {
-            const vec3 X = solid.reference()[i];
+            const point X = solid.reference()[i];
             solid.position[i] = T.apply(X);
             solid.velocity[i] = T.velocityAt(X);
         }

@@ -326,11 +326,12 @@ void particleGenerator::checkSolid
     {
         const scalar tol = 1e-9*spec.dp;
         std::vector<label>& clamped = body.addLabelField("clamped", 0);
-        const std::vector<vec3>& position = body.position();
+        const std::vector<point>& position = body.position();
         label nClamped = 0;
         for (label p = 0; p < body.size(); ++p)
         {
-            clamped[p] = spec.clamp->inside(position[p], tol) ? 1 : 0;
+            clamped[p] =
+                spec.clamp->inside(toVec3(position[p]), tol) ? 1 : 0;
             nClamped += clamped[p];
         }
         if (!nClamped)
@@ -356,7 +357,8 @@ void particleGenerator::checkSolid
             thinMemberTolerance, *spec.material));
     }
     const latticeMembers members =
-        findThinMembers(body.position(), spec.dp, nDimensions_, minLayers);
+        findThinMembers(toVectors(body.position()), spec.dp, nDimensions_,
+                        minLayers);
     summary.thinnestLayers = members.thinnestLayers;
 
     if (!members.hasSecondNeighbours || (members.thinnestLayers >= 0
@@ -366,7 +368,7 @@ void particleGenerator::checkSolid
         os << what << " is too thin for the VCPM lattice: ";
         if (members.thinnestLayers >= 0)
         {
-            const vec3& p = body.position()[members.where];
+            const vec3 p = toVec3(body.position()[members.where]);
             os << "a member only " << members.thinnestLayers << " particle"
                << " thick (at " << shapeDetail::str(p, nDimensions_) << ")";
         }
@@ -387,7 +389,7 @@ void particleGenerator::checkSolid
             scalar(members.thinnestLayers), *spec.material);
         if (std::abs(error) > thinMemberTolerance)
         {
-            const vec3& p = body.position()[members.where];
+            const vec3 p = toVec3(body.position()[members.where]);
             std::ostringstream os;
             os.precision(3);
             os << what << ": its thinnest member is "
@@ -537,7 +539,9 @@ void particleGenerator::generate()
 
             particleBody body(spec.name, type, nDimensions_, spec.dp);
             body.resize(label(nodes.size()));
-            std::copy(nodes.begin(), nodes.end(), body.position().begin());
+            std::transform(nodes.begin(), nodes.end(),
+                           body.position().begin(),
+                           [](const vec3& x) { return toPoint(x); });
             body.addVectorField("U", spec.U);
             body.addScalarField("rho", spec.rho);
             body.addScalarField("mass", spec.rho*cellVolume);

@@ -195,14 +195,15 @@ void writeVtp(const std::filesystem::path& file, const particleBody& body,
         }
     }
 
-    const std::vector<vec3>& position = body.position();
-    dataArray points = directArray("Points", scalarType, 3, position);
+    // Positions are points, double in both builds.
+    const std::vector<point>& position = body.position();
+    dataArray points = directArray("Points", "Float64", 3, position);
     if (planar)
     {
         // A 2D body lies in the x-y plane whatever z holds in memory.
         points.writeValues = [&position](std::ostream& os)
         {
-            std::vector<vec3> buf;
+            std::vector<point> buf;
             buf.reserve(std::min(position.size(), chunkSize));
             for (std::size_t start = 0; start < position.size();
                  start += chunkSize)
@@ -214,7 +215,7 @@ void writeVtp(const std::filesystem::path& file, const particleBody& body,
                 {
                     buf.push_back({position[i].x, position[i].y, 0});
                 }
-                writeRaw(os, buf.data(), buf.size()*sizeof(vec3));
+                writeRaw(os, buf.data(), buf.size()*sizeof(point));
             }
         };
     }

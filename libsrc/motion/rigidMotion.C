@@ -152,7 +152,7 @@ void rigidMotion::setRotation
 rigidTransform rigidMotion::transform(const scalar t) const
 {
     rigidTransform T;
-    T.origin = origin_;
+    T.origin = toPoint(origin_);
 
     // Rodrigues: R = cos I + sin [k]x + (1 - cos) k k^T.
     const scalar theta = angle(t);
@@ -179,7 +179,7 @@ rigidTransform rigidMotion::transform(const scalar t) const
     T.angularAcceleration =
         (angle_ ? angle_->secondDerivative(t) : 0)*axis_;
 
-    T.translation = offset(t)*direction_;
+    T.translation = toPoint(offset(t)*direction_);
     T.linearVelocity = (offset_ ? offset_->derivative(t) : 0)*direction_;
     T.linearAcceleration =
         (offset_ ? offset_->secondDerivative(t) : 0)*direction_;

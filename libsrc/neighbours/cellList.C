@@ -11,7 +11,7 @@
 namespace sphvcpm
 {
 
-cellGrid makeCellGrid(const vec3& lower, const vec3& upper,
+cellGrid makeCellGrid(const point& lower, const point& upper,
                       const scalar support, const int divisor,
                       const int nDimensions)
 {

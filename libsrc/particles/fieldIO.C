@@ -441,7 +441,8 @@ struct parseError
 // it) and returns its end, or nullptr with err set.
 struct asciiScalar
 {
-    static const char* read(const char* p, const char* end, scalar& v,
+    template<class T>
+    static const char* read(const char* p, const char* end, T& v,
                             parseError& err)
     {
         err.at = p;
@@ -449,7 +450,7 @@ struct asciiScalar
         {
             ++p;
         }
-        // Read as double in every build, then rounded once to scalar.
+        // Read as double in every build, then rounded once to T.
         double d = 0;
         const auto [q, ec] = std::from_chars(p, end, d);
         if (ec == std::errc::result_out_of_range)
@@ -457,7 +458,7 @@ struct asciiScalar
             err.why = "is out of the range of a double";
             return nullptr;
         }
-        v = scalar(d);
+        v = T(d);
         if (ec != std::errc() || (q < end && !endsValue(*q)))
         {
             err.why = "is not a number";
@@ -513,7 +514,8 @@ inline const char* skipBlanks(const char* p, const char* end)
 // "(x y z)"
 struct asciiVector
 {
-    static const char* read(const char* p, const char* end, vec3& v,
+    template<class T>
+    static const char* read(const char* p, const char* end, Vec3<T>& v,
                             parseError& err)
     {
         const char* start = p;
@@ -683,15 +685,17 @@ label readCount(fieldParser& parser)
 }
 
 
-// n raw values right after "(", then ")".
+// n raw values right after "(", then ")"; into points (double) when
+// points, else into the field's scalar.
 void readBinaryValues(fieldParser& parser, void* dest, label n,
-                      fieldKind kind, const std::string& file)
+                      fieldKind kind, const std::string& file,
+                      const bool points)
 {
     const std::size_t bytes = std::size_t(n)*valueBytes(kind);
     parser.markBinary(parser.pos());
     if (bytes)
     {
-        if (kind == fieldKind::labelField
+        if (kind == fieldKind::labelField || points
          || std::is_same_v<scalar, fileScalar>)
         {
             std::memcpy(dest, parser.data() + parser.pos(), bytes);
@@ -724,10 +728,14 @@ void readBinaryValues(fieldParser& parser, void* dest, label n,
         return;
     }
     const std::size_t perValue = kind == fieldKind::vectorField ? 3 : 1;
-    const scalar* v = static_cast<const scalar*>(dest);
+    const auto value = [&](const std::size_t i) -> double
+    {
+        return points ? static_cast<const double*>(dest)[i]
+                      : static_cast<const scalar*>(dest)[i];
+    };
     for (std::size_t i = 0; i < std::size_t(n)*perValue; ++i)
     {
-        if (!std::isfinite(v[i]))
+        if (!std::isfinite(value(i)))
         {
             fatalIOError(file, 0, "Value " + std::to_string(i/perValue + 1)
                 + " of " + std::to_string(n) + " is not a finite number (NaN "
@@ -739,7 +747,7 @@ void readBinaryValues(fieldParser& parser, void* dest, label n,
 
 // N{value}, as OpenFOAM writes a list of equal values; ends before '}'.
 void readUniformValue(fieldParser& parser, void* dest, label n,
-                      fieldKind kind)
+                      fieldKind kind, const bool points)
 {
     parser.skipSpace();
     parseError err;
@@ -757,6 +765,13 @@ void readUniformValue(fieldParser& parser, void* dest, label n,
         }
         case fieldKind::vectorField:
         {
+            if (points)
+            {
+                point v{0, 0, 0};
+                q = asciiVector::read(b, e, v, err);
+                std::fill_n(static_cast<point*>(dest), n, v);
+                break;
+            }
             vec3 v{0, 0, 0};
             q = asciiVector::read(b, e, v, err);
             std::fill_n(static_cast<vec3*>(dest), n, v);
@@ -786,7 +801,8 @@ void readUniformValue(fieldParser& parser, void* dest, label n,
 
 
 // n ascii values after "(", then ")".
-void readAsciiList(fieldParser& parser, void* dest, label n, fieldKind kind)
+void readAsciiList(fieldParser& parser, void* dest, label n, fieldKind kind,
+                   const bool points)
 {
     switch (kind)
     {
@@ -795,6 +811,12 @@ void readAsciiList(fieldParser& parser, void* dest, label n, fieldKind kind)
                                          n, "scalar");
             break;
         case fieldKind::vectorField:
+            if (points)
+            {
+                readAsciiValues<asciiVector>(parser,
+                    static_cast<point*>(dest), n, "vector");
+                break;
+            }
             readAsciiValues<asciiVector>(parser, static_cast<vec3*>(dest),
                                          n, "vector");
             break;
@@ -843,6 +865,10 @@ void* fieldData(particleBody& body, const std::string& name, fieldKind kind)
         case fieldKind::scalarField:
             return body.addScalarField(name).data();
         case fieldKind::vectorField:
+            if (particleBody::isPointField(name))
+            {
+                return body.position().data();
+            }
             return body.addVectorField(name).data();
         case fieldKind::labelField:
             return body.addLabelField(name).data();
@@ -860,6 +886,7 @@ void writeField(const std::filesystem::path& file, const particleBody& body,
                 int precision, const std::string& location)
 {
     const fieldKind kind = body.kindOf(fieldName);
+    const bool points = particleBody::isPointField(fieldName);
     const label n = body.size();
     std::size_t size = 0;
     const void* raw = nullptr;
@@ -870,8 +897,10 @@ void writeField(const std::filesystem::path& file, const particleBody& body,
             raw = body.scalarField(fieldName).data();
             break;
         case fieldKind::vectorField:
-            size = body.vectorField(fieldName).size();
-            raw = body.vectorField(fieldName).data();
+            size = points ? body.position().size()
+                          : body.vectorField(fieldName).size();
+            raw = points ? static_cast<const void*>(body.position().data())
+                         : body.vectorField(fieldName).data();
             break;
         case fieldKind::labelField:
             size = body.labelField(fieldName).size();
@@ -905,7 +934,7 @@ void writeField(const std::filesystem::path& file, const particleBody& body,
     {
         os << n << '(';
         out.write(os.str());
-        if (kind == fieldKind::labelField
+        if (kind == fieldKind::labelField || points
          || std::is_same_v<scalar, fileScalar>)
         {
             out.write(static_cast<const char*>(raw),
@@ -949,20 +978,28 @@ void writeField(const std::filesystem::path& file, const particleBody& body,
                     });
                 break;
             case fieldKind::vectorField:
+            {
+                const auto formatVector = [precision](char* p, const auto& v)
+                {
+                    *p++ = '(';
+                    p = formatScalar(p, v.x, precision);
+                    *p++ = ' ';
+                    p = formatScalar(p, v.y, precision);
+                    *p++ = ' ';
+                    p = formatScalar(p, v.z, precision);
+                    *p++ = ')';
+                    return p;
+                };
+                if (points)
+                {
+                    writeAsciiValues(out, static_cast<const point*>(raw), n,
+                                     3*scalarChars + 4, formatVector);
+                    break;
+                }
                 writeAsciiValues(out, static_cast<const vec3*>(raw), n,
-                    3*scalarChars + 4,
-                    [precision](char* p, const vec3& v)
-                    {
-                        *p++ = '(';
-                        p = formatScalar(p, v.x, precision);
-                        *p++ = ' ';
-                        p = formatScalar(p, v.y, precision);
-                        *p++ = ' ';
-                        p = formatScalar(p, v.z, precision);
-                        *p++ = ')';
-                        return p;
-                    });
+                                 3*scalarChars + 4, formatVector);
                 break;
+            }
             case fieldKind::labelField:
                 writeAsciiValues(out, static_cast<const label*>(raw), n, 13,
                     [](char* p, label v)
@@ -1051,17 +1088,19 @@ void readField(const std::filesystem::path& file, particleBody& body)
     }
 
     void* dest = fieldData(body, fieldName, kind);
+    const bool points =
+        kind == fieldKind::vectorField && particleBody::isPointField(fieldName);
     if (header.binary)
     {
-        readBinaryValues(parser, dest, n, kind, fileName);
+        readBinaryValues(parser, dest, n, kind, fileName, points);
     }
     else if (uniform)
     {
-        readUniformValue(parser, dest, n, kind);
+        readUniformValue(parser, dest, n, kind, points);
     }
     else
     {
-        readAsciiList(parser, dest, n, kind);
+        readAsciiList(parser, dest, n, kind, points);
     }
     readEntryEnd(parser);
 

@@ -64,6 +64,14 @@ void compact(std::vector<T>& field, const std::vector<char>& flags)
 } // End anonymous namespace
 
 
+std::vector<vec3> toVectors(const std::vector<point>& x)
+{
+    std::vector<vec3> out(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) out[i] = toVec3(x[i]);
+    return out;
+}
+
+
 std::string bodyTypeName(bodyType type)
 {
     switch (type)
@@ -123,7 +131,6 @@ particleBody::particleBody(std::string name, bodyType type, int nDimensions,
         fatalError("Body '" + name_ + "': particle spacing dp is " + os.str()
             + ", expected a positive number");
     }
-    vectorFields_["position"];
     labelFields_["id"];
 }
 
@@ -148,6 +155,7 @@ void particleBody::resize(label n)
     {
         f.second.resize(n, scalar(0));
     }
+    position_.resize(n, point{0, 0, 0});
     for (auto& f : vectorFields_)
     {
         f.second.resize(n, vec3{0, 0, 0});
@@ -165,11 +173,11 @@ void particleBody::resize(label n)
 }
 
 
-label particleBody::append(const vec3& p)
+label particleBody::append(const point& p)
 {
     const label i = size_;
     resize(size_ + 1);
-    vectorFields_["position"][i] = p;
+    position_[i] = p;
     return i;
 }
 
@@ -213,7 +221,7 @@ std::vector<label>& particleBody::addLabelField(const std::string& name,
 bool particleBody::hasField(const std::string& name) const
 {
     return scalarFields_.count(name) || vectorFields_.count(name)
-        || labelFields_.count(name);
+        || labelFields_.count(name) || isPointField(name);
 }
 
 
@@ -223,7 +231,7 @@ fieldKind particleBody::kindOf(const std::string& name) const
     {
         return fieldKind::scalarField;
     }
-    if (vectorFields_.count(name))
+    if (vectorFields_.count(name) || isPointField(name))
     {
         return fieldKind::vectorField;
     }
@@ -246,6 +254,7 @@ std::vector<std::string> particleBody::fieldNames() const
     {
         names.push_back(f.first);
     }
+    names.push_back("position");
     for (const auto& f : labelFields_)
     {
         names.push_back(f.first);
@@ -276,7 +285,11 @@ void particleBody::missingField(const std::string& name,
 {
     std::string message = "Body '" + name_ + "' has no " + expected + " '"
         + name + "'";
-    if (hasField(name))
+    if (isPointField(name))
+    {
+        message += ": it is a vectorField of points, position()";
+    }
+    else if (hasField(name))
     {
         message += ": it is a " + std::string(kindName(kindOf(name)));
     }
@@ -393,6 +406,7 @@ void particleBody::reorder(const std::vector<label>& order)
         }
         seen[j] = 1;
     }
+    permute(position_, order);
     for (auto& f : scalarFields_)
     {
         permute(f.second, order);
@@ -422,6 +436,7 @@ label particleBody::remove(const std::vector<char>& flags)
     {
         return 0;
     }
+    compact(position_, flags);
     for (auto& f : scalarFields_)
     {
         compact(f.second, flags);

@@ -72,13 +72,13 @@ std::vector<vec3> readPoints(const dictionary& dict, const std::string& key,
 // Whether x is within distance r of the grid box: farther out no particle
 // can be within r (particles outside the grid are never in a cell), and
 // forEachCandidate must not convert huge or NaN cell indices to int.
-bool nearGrid(const cellGrid& g, const vec3& x, const scalar r)
+bool nearGrid(const cellGrid& g, const point& x, const scalar r)
 {
     const int n[3] = {g.nx, g.ny, g.nz};
     for (int d = 0; d < 3; ++d)
     {
-        const scalar lo = g.origin[d] - r;
-        const scalar hi = g.origin[d] + n[d]*g.cellSize + r;
+        const double lo = g.origin[d] - r;
+        const double hi = g.origin[d] + n[d]*g.cellSize + r;
         if (!(x[d] >= lo && x[d] <= hi))
         {
             return false;
@@ -91,7 +91,7 @@ bool nearGrid(const cellGrid& g, const vec3& x, const scalar r)
 // distance r.
 template<class Kernel, class F>
 void forEachFluidNear(const solverSnapshot& s, const Kernel& kernel,
-                      const vec3& x, const F& f)
+                      const point& x, const F& f)
 {
     const scalar support = kernel.support();
     const scalar support2 = support*support;
@@ -104,7 +104,7 @@ void forEachFluidNear(const solverSnapshot& s, const Kernel& kernel,
     forEachCandidate(g, s.cells.cellStart.data(), x, [&](const label j)
     {
         if (pf.kind[j] != fluidKind) return;
-        const scalar r2 = magSqr(x - pf.position[j]);
+        const scalar r2 = magSqr(toVec3(x - pf.position[j]));
         if (r2 >= support2) return;
         f(j, std::sqrt(r2));
     });
@@ -114,7 +114,7 @@ void forEachFluidNear(const solverSnapshot& s, const Kernel& kernel,
 // 0.5 at a flat free surface, 0 in air.
 template<class Kernel>
 scalar concentration(const solverSnapshot& s, const Kernel& kernel,
-                     const vec3& x)
+                     const point& x)
 {
     const particleFields& pf = s.particles;
     scalar c = 0;
@@ -135,11 +135,11 @@ scalar extentAlong(const cellGrid& g, const vec3& b, const vec3& u)
     {
         if (u[d] > 0)
         {
-            t = std::min(t, (g.origin[d] + n[d]*g.cellSize - b[d])/u[d]);
+            t = std::min(t, scalar((g.origin[d] + n[d]*g.cellSize - b[d])/u[d]));
         }
         else if (u[d] < 0)
         {
-            t = std::min(t, (g.origin[d] - b[d])/u[d]);
+            t = std::min(t, scalar((g.origin[d] - b[d])/u[d]));
         }
     }
     return t > 0 ? t : 0;
@@ -240,7 +240,7 @@ std::vector<scalar> probes::values(const solverSnapshot& s) const
         for (std::size_t k = 0; k < locations_.size(); ++k)
         {
             scalar sumW = 0, sumP = 0;
-            forEachFluidNear(s, kernel, locations_[k],
+            forEachFluidNear(s, kernel, toPoint(locations_[k]),
                 [&](const label j, const scalar r)
                 {
                     const scalar WV = kernel.W(r)*pf.mass[j]/pf.rho[j];
@@ -316,7 +316,8 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
             scalar cAbove = 0;
             for (label i = n; i >= 0; --i)
             {
-                const scalar c = concentration(s, kernel, b + at(i)*up_);
+                const scalar c =
+                    concentration(s, kernel, toPoint(b + at(i)*up_));
                 if (c >= 0.5)
                 {
                     heights[k] = i == n
@@ -416,7 +417,7 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
         {
             vec3 f{0, 0, 0};
             if (pf.kind[w] == fluidKind || pf.body[w] != body) return f;
-            const vec3 xw = pf.position[w];
+            const point xw = pf.position[w];
             const vec3 vw = pf.velocity[w];
             const scalar mw = pf.mass[w];
             const scalar rhow = pf.rho[w];
@@ -424,7 +425,7 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
             forEachFluidNear(s, kernel, xw, [&](const label j, const scalar r)
             {
                 if (r <= 0) return;
-                const vec3 d = pf.position[j] - xw;      // x_fw
+                const vec3 d = toVec3(pf.position[j] - xw);  // x_fw
                 const scalar G = kernel.gradFactor(r);
                 const scalar mf = pf.mass[j];
                 const scalar rhof = pf.rho[j];
@@ -482,7 +483,7 @@ std::vector<scalar> energy::values(const solverSnapshot& s) const
             if (pf.kind[i] != fluidKind) return sumVec{0, 0, 0};
             const double m = pf.mass[i];
             return sumVec{m, 0.5*m*magSqr(pf.velocity[i]),
-                          -m*dot(g, pf.position[i])};
+                          -m*dot(toPoint(g), pf.position[i])};
         },
         sumVec{0, 0, 0}, vecSum{});
     return {scalar(e.x), scalar(e.y), scalar(e.z)};
@@ -524,7 +525,7 @@ std::vector<scalar> surgeFront::values(const solverSnapshot& s) const
         [&](const label i)
         {
             return pf.kind[i] == fluidKind
-              ? dot(pf.position[i] - origin_, direction_) : none;
+              ? dot(toVec3(pf.position[i] - origin_), direction_) : none;
         },
         none,
         [](const scalar a, const scalar b) { return a > b ? a : b; });
@@ -584,8 +585,8 @@ std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
         fatalError("Function object '" + name() + "': solid '" + body_
             + "' is not in the run");
     }
-    const std::vector<vec3>& X = *view->reference;
-    const std::vector<vec3>& x = *view->position;
+    const std::vector<point>& X = *view->reference;
+    const std::vector<point>& x = *view->position;
     if (particles_.empty())
     {
         for (const vec3& p : points_)
@@ -596,13 +597,13 @@ std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
                 if (magSqr(X[i] - p) < magSqr(X[best] - p)) best = i;
             }
             particles_.push_back(best);
-            chosen_.push_back(X[best]);
+            chosen_.push_back(toVec3(X[best]));
         }
     }
     std::vector<scalar> row;
     for (const label i : particles_)
     {
-        const vec3 u = x[i] - X[i];
+        const vec3 u = toVec3(x[i] - X[i]);
         row.push_back(u.x);
         row.push_back(u.y);
         if (nDimensions_ == 3) row.push_back(u.z);

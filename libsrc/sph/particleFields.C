@@ -54,8 +54,11 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
     std::vector<std::uint8_t> newKind(n), newBody(n);
     std::vector<label> newId(n);
     std::vector<label> newLink(link.empty() ? 0 : n);
+    std::vector<point>& newPosition =
+        positionScratchOf(positionScratch, velocity0);
+    newPosition.resize(n);
     parallelFor(openmpExec{}, n, reorderOp{order.data(),
-        position.data(), velocity0.data(),
+        position.data(), newPosition.data(),
         velocity.data(), acceleration.data(),
         rho.data(), rho0.data(),
         p.data(), drho.data(),
@@ -64,7 +67,7 @@ void particleFields::reorder(const std::vector<label>& order, const label n,
         body.data(), newBody.data(),
         id.data(), newId.data(),
         link.empty() ? nullptr : link.data(), newLink.data()});
-    position.swap(velocity0);
+    position.swap(newPosition);
     velocity.swap(acceleration);
     rho.swap(rho0);
     p.swap(drho);
@@ -117,7 +120,9 @@ particleView particleFields::view()
 
 std::size_t particleFields::bytesPerParticle() const
 {
-    std::size_t b = 4*sizeof(vec3) + 6*sizeof(scalar) + 2 + sizeof(label);
+    std::size_t b = sizeof(point) + 3*sizeof(vec3) + 6*sizeof(scalar) + 2
+                  + sizeof(label);
+    if (sizeof(point) != sizeof(vec3)) b += sizeof(point);  // its scratch
     b += sizeof(std::uint32_t) + sizeof(label);   // sort key and order
     b += sizeof(scalar);                          // viscous step term
     if (!tau.empty()) b += sizeof(symmTensor);

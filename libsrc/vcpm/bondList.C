@@ -28,7 +28,7 @@ std::int64_t cellKey(const std::int64_t a, const std::int64_t b,
 } // End anonymous namespace
 
 
-bondList::bondList(const std::vector<vec3>& X, const scalar l0,
+bondList::bondList(const std::vector<point>& X, const scalar l0,
                    const bool surfaceCorrection, const scalar gamma)
 {
     const label n = label(X.size());
@@ -42,8 +42,8 @@ bondList::bondList(const std::vector<vec3>& X, const scalar l0,
 
     // Cell linked list in a hash: cells of side cut2, so every bond joins
     // the same or adjacent cells.
-    vec3 lo = n ? X[0] : vec3{0, 0, 0};
-    for (const vec3& p : X)
+    point lo = n ? X[0] : point{0, 0, 0};
+    for (const point& p : X)
     {
         lo.x = std::min(lo.x, p.x);
         lo.y = std::min(lo.y, p.y);
@@ -145,7 +145,7 @@ bondList::bondList(const std::vector<vec3>& X, const scalar l0,
         {
             const label k = adjacency_[a];
             const label q = first_[k] == p ? second_[k] : first_[k];
-            if (magSqr(X[q] - X[p] - d) < tol2) return q;
+            if (magSqr(toVec3(X[q] - X[p]) - d) < tol2) return q;
         }
         return -1;
     };
@@ -163,7 +163,7 @@ bondList::bondList(const std::vector<vec3>& X, const scalar l0,
     // mirror image stands in for it), else 1.
     for (label k = 0; k < nBonds(); ++k)
     {
-        const vec3 d = X[second_[k]] - X[first_[k]];
+        const vec3 d = toVec3(X[second_[k]] - X[first_[k]]);
         if (neighbour(first_[k], -1.0*d) < 0) weight_[2*k] = 2;
         if (neighbour(second_[k], d) < 0) weight_[2*k + 1] = 2;
     }
@@ -177,7 +177,7 @@ bondList::bondList(const std::vector<vec3>& X, const scalar l0,
         m[dir] = l0;
         for (label k = 0; k < nBonds(); ++k)
         {
-            const vec3 d = X[second_[k]] - X[first_[k]];
+            const vec3 d = toVec3(X[second_[k]] - X[first_[k]]);
             if (layer_[k] == 0 && std::abs(std::abs(d[dir]) - l0) < 0.01*l0)
             {
                 axes.push_back(m);
@@ -190,7 +190,7 @@ bondList::bondList(const std::vector<vec3>& X, const scalar l0,
     {
         if (layer_[k] != 0) continue;
         const label i = first_[k], j = second_[k];
-        const vec3 d = X[j] - X[i];
+        const vec3 d = toVec3(X[j] - X[i]);
         for (const vec3& m : axes)
         {
             if (std::abs(dot(d, m)) > 0.01*l0*l0) continue;

@@ -101,7 +101,7 @@ solidBodySet::solidBodySet
                                               massRho, damping,
                                               latticeDamping);
 
-        std::vector<vec3> reference = b.position();
+        std::vector<point> reference = b.position();
         if (!freshStart)
         {
             auto it = std::find_if(zero.begin(), zero.end(),
@@ -227,7 +227,7 @@ std::string solidBodySet::firstNonFinite() const
 {
     for (const solidBody& b : bodies_)
     {
-        const std::vector<vec3>& x = b.solid->position;
+        const std::vector<point>& x = b.solid->position;
         for (std::size_t i = 0; i < x.size(); ++i)
         {
             if (std::isfinite(x[i].x + x[i].y + x[i].z)) continue;
@@ -250,7 +250,7 @@ std::string solidBodySet::firstCollapsed(const scalar fraction,
     for (const solidBody& b : bodies_)
     {
         const bondView bonds = b.solid->bonds().view();
-        const std::vector<vec3>& x = b.solid->position;
+        const std::vector<point>& x = b.solid->position;
         const label k = parallelReduce(openmpExec{}, bonds.nBonds,
             collapsedBondOp{bonds, x.data(), fraction}, bonds.nBonds,
             minOp());

@@ -9,17 +9,16 @@
 namespace sphvcpm
 {
 
-std::vector<vec3> cantileverLattice(const label nLength, const label nLayers,
-                                    const label nClamp, const scalar l0)
+std::vector<point> cantileverLattice(const label nLength, const label nLayers,
+                                     const label nClamp, const scalar l0)
 {
-    std::vector<vec3> x;
+    std::vector<point> x;
     x.reserve((nLength + nClamp)*nLayers);
     for (label i = -nClamp; i < nLength; ++i)
     {
         for (label j = 0; j < nLayers; ++j)
         {
-            x.push_back({scalar((i + 0.5)*l0),
-                         scalar((j + 0.5 - 0.5*nLayers)*l0), 0});
+            x.push_back({(i + 0.5)*l0, (j + 0.5 - 0.5*nLayers)*l0, 0});
         }
     }
     return x;

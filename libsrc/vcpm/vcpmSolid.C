@@ -12,7 +12,7 @@ namespace sphvcpm
 {
 
 vcpmSolid::vcpmSolid(const vcpmMaterial& material,
-                     const std::vector<vec3>& reference)
+                     const std::vector<point>& reference)
 :
     position(reference),
     velocity(reference.size(), vec3{0, 0, 0}),
@@ -47,22 +47,23 @@ scalar surfaceShift(const vcpmMaterial& m)
     // or plane-stress beam. The energy of the middle column is linear in
     // gamma; gamma makes it the continuum 1/2 E' I k^2 per column.
     const int nRef = 4, nx = 5, nz = m.nDim() == 3 ? 5 : 1;
-    const scalar l0 = m.l0, kappa = 1e-6/l0;
+    const scalar l0 = m.l0;
+    const double kappa = 1e-6/l0;
     const bool stress2D = m.nDim() == 2 && m.plane == planeModel::planeStress;
     const scalar nuP = stress2D ? m.nu : m.nu/(1 - m.nu);
     const scalar Eb = stress2D ? m.E : m.E/(1 - m.nu*m.nu);
-    std::vector<vec3> X, x;
+    std::vector<point> X, x;
     std::vector<label> middle;
     for (int k = 0; k < nz; ++k)
     for (int j = 0; j < nRef; ++j)
     for (int i = 0; i < nx; ++i)
     {
-        const vec3 p{(i - nx/2)*l0, scalar((j - 0.5*(nRef - 1))*l0),
-                     (k - nz/2)*l0};
+        const point p{double((i - nx/2)*l0), (j - 0.5*(nRef - 1))*l0,
+                      double((k - nz/2)*l0)};
         if (i == nx/2 && k == nz/2) middle.push_back(label(X.size()));
         X.push_back(p);
-        x.push_back(p + kappa*vec3{p.x*p.y,
-                                   scalar(-0.5*(p.x*p.x + nuP*p.y*p.y)), 0});
+        x.push_back(p + kappa*point{p.x*p.y,
+                                    -0.5*(p.x*p.x + nuP*p.y*p.y), 0});
     }
     const vcpmConstants c{{2*m.k1, 2*m.k2}, {m.T, m.T}};
     auto energy = [&](const scalar gamma)
@@ -114,7 +115,7 @@ std::vector<vec3> vcpmSolid::displacement() const
     std::vector<vec3> u(reference_.size());
     for (std::size_t p = 0; p < u.size(); ++p)
     {
-        u[p] = position[p] - reference_[p];
+        u[p] = toVec3(position[p] - reference_[p]);
     }
     return u;
 }

@@ -30,11 +30,11 @@ namespace
 // -0.13 to 0.09; with a side wall, three columns of it at x = -0.11 to
 // -0.13 up to y = 0.05 (its surface at x = -0.105). One solid particle of
 // spacing dp/4 at x; returns its contact plane.
-contactPlane planeAt(const vec3 x, const bool sideWall = false)
+contactPlane planeAt(const point x, const bool sideWall = false)
 {
     const scalar dp = 0.01, dpSolid = dp/4, rho0 = 1000;
     const wendlandC2Kernel k(1.5*dp, 2);
-    std::vector<vec3> walls;
+    std::vector<point> walls;
     for (int row = 0; row < 3; ++row)
     {
         for (int col = -13; col < 10; ++col)
@@ -80,8 +80,8 @@ contactPlane planeAt(const vec3 x, const bool sideWall = false)
 
 // One sub-step of a free particle with the given contact plane, from x
 // at velocity u with no force; returns its position and velocity.
-std::pair<vec3, vec3> stepAgainst(const contactPlane& plane, vec3 x, vec3 u,
-                                  const scalar dt)
+std::pair<point, vec3> stepAgainst(const contactPlane& plane, point x,
+                                   vec3 u, const scalar dt)
 {
     const vec3 force{0, 0, 0}, clampVelocity{0, 0, 0};
     const std::uint8_t clamped = 0;
@@ -95,12 +95,13 @@ std::pair<vec3, vec3> stepAgainst(const contactPlane& plane, vec3 x, vec3 u,
 
 TEST(solidWallContact, planeOfTheSmoothedWallEverywhere)
 {
+    SPHVCPM_DOUBLE_ONLY();   // positions to 1e-12
     // The wall's surface is y = dp/2 = 0.005 above the outer row; the
     // contact surface is dp_s/2 = 0.00125 further, y = 0.00625, above a
     // wall particle, and dips to y = sqrt(0.00625^2 - 0.005^2) = 0.00375
     // midway between two (contact with the nearest wall particle).
     EXPECT_EQ(mag(planeAt({0, 0.009, 0}).normal), 0);
-    EXPECT_NEAR(planeAt({0, 0.007, 0}).point.y, 0.00625, 1e-9);
+    EXPECT_NEAR(planeAt({0, 0.007, 0}).planePoint.y, 0.00625, 1e-9);
     for (const scalar x : {0.0, 0.0025, 0.005})      // on, off, between rows
     {
         SCOPED_TRACE("x = " + std::to_string(x));
@@ -115,11 +116,11 @@ TEST(solidWallContact, planeOfTheSmoothedWallEverywhere)
             const contactPlane c = planeAt({x, y, 0});
             EXPECT_NEAR(mag(c.normal), 1, 1e-12) << "y = " << y;
             EXPECT_GT(c.normal.y, std::cos(3*M_PI/180)) << "y = " << y;
-            if (y == 0) EXPECT_GT(c.point.y, 0.001) << "pushed out";
-            EXPECT_LT(c.point.y, 0.00625 + 1e-9) << "y = " << y;
+            if (y == 0) EXPECT_GT(c.planePoint.y, 0.001) << "pushed out";
+            EXPECT_LT(c.planePoint.y, 0.00625 + 1e-9) << "y = " << y;
         }
     }
-    EXPECT_NEAR(planeAt({0.005, 0.005, 0}).point.y,
+    EXPECT_NEAR(planeAt({0.005, 0.005, 0}).planePoint.y,
                 0.005 - (std::sqrt(0.005*0.005 + 0.005*0.005) - 0.00625),
                 1e-6);
 }
@@ -135,18 +136,19 @@ TEST(solidWallContact, innerCornerCountsTheNearWallOnly)
     for (const scalar y : {0.009, 0.02})
     {
         SCOPED_TRACE("y = " + std::to_string(y));
-        const vec3 x{-0.10375, y, 0};
+        const point x{-0.10375, y, 0};
         const contactPlane c = planeAt(x, true);
         ASSERT_NEAR(mag(c.normal), 1, 1e-12);
         EXPECT_GT(c.normal.x, std::cos(M_PI/4));
-        EXPECT_GT(dot(x - c.point, c.normal), -0.0003);
-        EXPECT_LT(dot(x - c.point, c.normal), 0.0015);
+        EXPECT_GT(dot(toVec3(x - c.planePoint), c.normal), -0.0003);
+        EXPECT_LT(dot(toVec3(x - c.planePoint), c.normal), 0.0015);
     }
 }
 
 
 TEST(solidWallContact, subStepsStopAtThePlane)
 {
+    SPHVCPM_DOUBLE_ONLY();   // positions to 1e-12
     const contactPlane floor{{0, 0.00625, 0}, {0, 1, 0}};
     // Moving into it: put back on it, the approach speed gone, the
     // sliding speed kept.

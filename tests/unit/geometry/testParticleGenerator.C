@@ -133,11 +133,11 @@ const particleBody& bodyNamed(const particleGenerator& gen,
 scalar minDistance(const particleBody& a, const particleBody& b)
 {
     scalar best = std::numeric_limits<scalar>::max();
-    for (const vec3& p : a.position())
+    for (const point& p : a.position())
     {
-        for (const vec3& q : b.position())
+        for (const point& q : b.position())
         {
-            best = std::min(best, magSqr(p - q));
+            best = std::min(best, scalar(magSqr(p - q)));
         }
     }
     return std::sqrt(best);
@@ -330,10 +330,10 @@ TEST(particleGenerator, threeDimensionalTank)
                 1e-18);
 
     // Only the fluid's nearest neighbours are checked, with a locator.
-    const pointLocator walls(tank.position(), 0.0125);
-    for (const vec3& p : water.position())
+    const pointLocator walls(toVectors(tank.position()), 0.0125);
+    for (const point& p : water.position())
     {
-        ASSERT_FALSE(walls.anyWithin(p, 0.0125*(1 - 1e-6)));
+        ASSERT_FALSE(walls.anyWithin(toVec3(p), 0.0125*(1 - 1e-6)));
     }
 
     std::ostringstream os;

@@ -304,7 +304,7 @@ TEST(vtp, planarBodyHasZeroZ)
 
     const parsedVtp vtp = parseVtp(file);
     EXPECT_FALSE(vtp.has("TimeValue"));
-    std::vector<vec3> expected = body.position();
+    std::vector<point> expected = body.position();
     for (auto& p : expected)
     {
         p.z = 0;

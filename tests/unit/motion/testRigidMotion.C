@@ -12,6 +12,8 @@
 #include "motionSet.H"
 #include "testDictionaryTools.H"
 
+#include "../testPrecision.H"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,7 +30,9 @@ namespace
 
 constexpr scalar pi = 3.14159265358979323846;
 
-void expectNear(const vec3& a, const vec3& b, const scalar tol)
+// Points (double in both builds) or vectors (scalar), compared as they are.
+template<class T>
+void expectNear(const Vec3<T>& a, const Vec3<T>& b, const scalar tol)
 {
     EXPECT_NEAR(a.x, b.x, tol);
     EXPECT_NEAR(a.y, b.y, tol);
@@ -45,25 +49,25 @@ timeFunction sinusoid(const test::scratchDir& dir, const std::string& body,
                               dir.path(), isAngle);
 }
 
-std::vector<vec3> randomPoints(const int n, const unsigned seed)
+std::vector<point> randomPoints(const int n, const unsigned seed)
 {
     std::mt19937 gen(seed);
     std::uniform_real_distribution<scalar> u(-1, 1);
-    std::vector<vec3> X(n);
-    for (vec3& p : X) p = {u(gen), u(gen), u(gen)};
+    std::vector<point> X(n);
+    for (point& p : X) p = {u(gen), u(gen), u(gen)};
     return X;
 }
 
 // Velocity and acceleration against central differences of position and
 // velocity, relative to the scale of the motion.
-void expectRatesMatch(const rigidMotion& m, const std::vector<vec3>& X,
+void expectRatesMatch(const rigidMotion& m, const std::vector<point>& X,
                           const scalar t, const scalar scale)
 {
     const scalar h = 1e-6;
-    for (const vec3& p : X)
+    for (const point& p : X)
     {
         const vec3 fd =
-            (m.position(p, t + h) - m.position(p, t - h))/(2*h);
+            toVec3(m.position(p, t + h) - m.position(p, t - h))/(2*h);
         const vec3 u = m.velocity(p, t);
         EXPECT_LT(mag(u - fd), 1e-8*scale)
             << "t = " << t << ", |u - fd| = " << mag(u - fd);
@@ -83,6 +87,7 @@ void expectRatesMatch(const rigidMotion& m, const std::vector<vec3>& X,
 
 TEST(rigidMotion, quarterTurnAndRightHandRule)
 {
+    SPHVCPM_DOUBLE_ONLY();   // digits of a double (time is scalar)
     const rigidMotion about0({0, 0, 0}, {0, 0, 2}, timeFunction(pi/2));
     expectNear(about0.position({1, 0, 0}, 0), {0, 1, 0}, 1e-15);
     expectNear(about0.position({0, 1, 0}, 0), {-1, 0, 0}, 1e-15);
@@ -110,6 +115,7 @@ TEST(rigidMotion, quarterTurnAndRightHandRule)
 // strain), and the velocity is the time derivative of the position.
 TEST(rigidMotion, rotationIsRigidAndVelocityIsRate)
 {
+    SPHVCPM_DOUBLE_ONLY();   // digits of a double (time is scalar)
     test::scratchDir dir("rmRigid");
     const vec3 origin{0.3, -0.2, 0.1};
     const vec3 axis{1, 2, -0.5};
@@ -117,17 +123,18 @@ TEST(rigidMotion, rotationIsRigidAndVelocityIsRate)
         "amplitude 30; period 1.3; phase 0.2; startTime 0.1; rampTime 0.5;"
         " units degrees;", true));
 
-    const std::vector<vec3> X = randomPoints(20, 7);
+    const std::vector<point> X = randomPoints(20, 7);
     const vec3 k = axis/mag(axis);
     for (const scalar t : {0.0, 0.23, 0.47, 0.8, 1.9})
     {
         const rigidTransform T = m.transform(t);
         for (std::size_t i = 0; i < X.size(); ++i)
         {
-            const vec3 x = T.apply(X[i]);
+            const point x = T.apply(X[i]);
             EXPECT_NEAR(mag(x - origin), mag(X[i] - origin), 1e-14);
             // The same point of the axis, the same distance from it.
-            EXPECT_NEAR(dot(x - origin, k), dot(X[i] - origin, k), 1e-14);
+            EXPECT_NEAR(dot(x - origin, toPoint(k)),
+                        dot(X[i] - origin, toPoint(k)), 1e-14);
             for (std::size_t j = 0; j < i; ++j)
             {
                 EXPECT_NEAR(mag(x - T.apply(X[j])), mag(X[i] - X[j]), 1e-14);
@@ -142,6 +149,7 @@ TEST(rigidMotion, rotationIsRigidAndVelocityIsRate)
 // then translation; inverse and velocity of a moved point.
 TEST(rigidMotion, rotationWithTranslation)
 {
+    SPHVCPM_DOUBLE_ONLY();   // digits of a double (time is scalar)
     test::scratchDir dir("rmBoth");
     rigidMotion quarter({1, 0, 0}, {0, 0, 1}, timeFunction(pi/2));
     quarter.setTranslation({2, 0, 0}, timeFunction(0.5));
@@ -156,15 +164,15 @@ TEST(rigidMotion, rotationWithTranslation)
     m.setTranslation({1, 1, 0}, sinusoid(dir,
         "amplitude 0.05; frequency 0.7; phase 1; startTime 0.2;", false));
 
-    const std::vector<vec3> X = randomPoints(20, 11);
+    const std::vector<point> X = randomPoints(20, 11);
     for (const scalar t : {0.1, 0.35, 0.9, 2.2})
     {
         const rigidTransform T = m.transform(t);
-        const vec3 d = m.offset(t)*vec3{1, 1, 0}/std::sqrt(2.0);
+        const point d = toPoint(m.offset(t)*vec3{1, 1, 0}/std::sqrt(2.0));
         expectNear(T.translation, d, 1e-15);
-        for (const vec3& p : X)
+        for (const point& p : X)
         {
-            const vec3 x = T.apply(p);
+            const point x = T.apply(p);
             // The rotation part alone keeps the distance to the axis.
             EXPECT_NEAR(mag(x - d - T.origin), mag(p - T.origin), 1e-14);
             expectNear(T.reference(x), p, 1e-14);
@@ -197,7 +205,7 @@ TEST(rigidMotion, steadyTurnIsCentripetal)
     ));
     for (const scalar t : {0.3, 2.0, 7.1})
     {
-        const vec3 arm = m.position({3, 0, 0}, t) - vec3{1, 0, 0};
+        const vec3 arm = toVec3(m.position({3, 0, 0}, t) - point{1, 0, 0});
         expectNear(m.acceleration({3, 0, 0}, t), -4.0*arm, 1e-13);
         expectNear(m.velocity({3, 0, 0}, t), 2.0*vec3{-arm.y, arm.x, 0},
                    1e-13);
@@ -211,6 +219,7 @@ TEST(rigidMotion, steadyTurnIsCentripetal)
 // by the measured roll, a gate translated by a sinusoid.
 TEST(motionSet, rollingTank)
 {
+    SPHVCPM_DOUBLE_ONLY();   // digits of a double (time is scalar)
     test::scratchDir dir("msTank");
     const std::string csv = std::string(SPHVCPM_TEST_DATA)
         + "/motion/ROLLING_TANK_IDELSOHN_REFERENCE.csv";
@@ -248,10 +257,10 @@ TEST(motionSet, rollingTank)
     // At a sample of the record the tank is turned by the listed angle.
     const rigidMotion& roll = *set.motionOf("tank");
     const scalar theta = -3.2209232*pi/180;   // t = 2.49 s
-    const vec3 corner{0.609, 0.3445, 0};
-    const vec3 r = corner - vec3{0.3045, 0, 0};
-    const vec3 expected = vec3{0.3045, 0, 0}
-        + vec3{std::cos(theta)*r.x - std::sin(theta)*r.y,
+    const point corner{0.609, 0.3445, 0};
+    const point r = corner - point{0.3045, 0, 0};
+    const point expected = point{0.3045, 0, 0}
+        + point{std::cos(theta)*r.x - std::sin(theta)*r.y,
                std::sin(theta)*r.x + std::cos(theta)*r.y, 0};
     expectNear(roll.position(corner, 2.49), expected, 1e-15);
     EXPECT_NEAR(roll.angle(2.49), theta, 1e-15);

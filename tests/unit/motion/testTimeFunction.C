@@ -11,6 +11,8 @@
 #include "testDictionaryTools.H"
 #include "timeFunction.H"
 
+#include "../testPrecision.H"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -110,6 +112,7 @@ TEST(timeFunction, constantAndUnits)
 // slopes, the weighted knot slope, whitespace and comma separators.
 TEST(timeFunction, tableLinear)
 {
+    SPHVCPM_DOUBLE_ONLY();   // digits of a double (time is scalar)
     test::scratchDir dir("tfLinear");
     dir.write("constant/a.dat",
         "# time value\n\n0 1\n  1\t3  \n# a comment between rows\n3 -1\n");
@@ -163,6 +166,7 @@ TEST(timeFunction, tableLinear)
 // too.
 TEST(timeFunction, tableSampledSinusoidSecondOrder)
 {
+    SPHVCPM_DOUBLE_ONLY();   // digits of a double (time is scalar)
     test::scratchDir dir("tfSine");
     const auto f = [](scalar t) { return std::sin(2*t) + 0.5*t; };
     const auto df = [](scalar t) { return 2*std::cos(2*t) + 0.5; };
@@ -189,7 +193,8 @@ TEST(timeFunction, tableSampledSinusoidSecondOrder)
             for (std::size_t i = 0; i + 1 < t.size(); ++i)
             {
                 const scalar mid = 0.5*(t[i] + t[i + 1]);
-                err = std::max(err, std::abs(table.value(mid) - f(mid)));
+                err = std::max<scalar>(err,
+                                       std::abs(table.value(mid) - f(mid)));
             }
             valueErr.push_back(err);
         }
@@ -217,7 +222,7 @@ TEST(timeFunction, tableSampledSinusoidSecondOrder)
         scalar err = 0;
         for (std::size_t i = 1; i + 2 < t.size(); ++i)
         {
-            for (const scalar tt : {t[i], 0.5*(t[i] + t[i + 1])})
+            for (const scalar tt : {t[i], scalar(0.5*(t[i] + t[i + 1]))})
             {
                 err = std::max(err,
                     std::abs(table.secondDerivative(tt) - d2f(tt)));
@@ -234,6 +239,7 @@ TEST(timeFunction, tableSampledSinusoidSecondOrder)
 // directly: a CSV with a header, two cases in one file.
 TEST(timeFunction, rollingTankRecord)
 {
+    SPHVCPM_DOUBLE_ONLY();   // digits of a double (time is scalar)
     test::scratchDir dir("tfRoll");
     const std::string csv =
         fullPath("motion/ROLLING_TANK_IDELSOHN_REFERENCE.csv");
@@ -289,6 +295,7 @@ TEST(timeFunction, rollingTankRecord)
 
 TEST(timeFunction, sinusoidWithRamp)
 {
+    SPHVCPM_DOUBLE_ONLY();   // digits of a double (time is scalar)
     test::scratchDir dir("tfSinusoid");
     const scalar A = 4, T = 1.214, phase = 0.3, t0 = 0.5, ramp = 0.8;
     const timeFunction f = readFunction(dir, "type sinusoid;\namplitude 4;\n"

@@ -35,10 +35,10 @@ const scalar Inf = std::numeric_limits<scalar>::infinity();
 struct cloud
 {
     std::string name;
-    vec3 lower, upper;
+    point lower, upper;
     scalar support;
     int nDim;
-    std::vector<vec3> x;
+    std::vector<point> x;
 };
 
 scalar uniform(std::mt19937_64& gen, const scalar a, const scalar b)
@@ -65,7 +65,7 @@ void addClusters(cloud& c, std::mt19937_64& gen, const int nClusters,
     std::normal_distribution<scalar> normal(0, sigma);
     for (int k = 0; k < nClusters; ++k)
     {
-        const vec3 centre{uniform(gen, c.lower.x, c.upper.x),
+        const point centre{uniform(gen, c.lower.x, c.upper.x),
                           uniform(gen, c.lower.y, c.upper.y),
                           c.nDim == 3 ? uniform(gen, c.lower.z, c.upper.z) : 0};
         for (label m = 0; m < perCluster; ++m)
@@ -74,7 +74,7 @@ void addClusters(cloud& c, std::mt19937_64& gen, const int nClusters,
                            c.nDim == 3 ? centre.z + normal(gen) : 0});
         }
     }
-    const vec3 pile{uniform(gen, c.lower.x, c.upper.x),
+    const point pile{uniform(gen, c.lower.x, c.upper.x),
                     uniform(gen, c.lower.y, c.upper.y),
                     c.nDim == 3 ? uniform(gen, c.lower.z, c.upper.z) : 0};
     for (int m = 0; m < 25; ++m)
@@ -110,7 +110,7 @@ void addFacePoints(cloud& c, std::mt19937_64& gen, const int perSupport,
     std::uniform_int_distribution<int> axis(0, c.nDim - 1);
     for (label m = 0; m < nRandom; ++m)
     {
-        vec3 p{uniform(gen, c.lower.x, c.upper.x),
+        point p{uniform(gen, c.lower.x, c.upper.x),
                uniform(gen, c.lower.y, c.upper.y),
                c.nDim == 3 ? uniform(gen, c.lower.z, c.upper.z) : 0};
         const int a = axis(gen);
@@ -126,7 +126,7 @@ void addFacePoints(cloud& c, std::mt19937_64& gen, const int perSupport,
 void addOutside(cloud& c)
 {
     const scalar s = c.support;
-    const vec3 mid = 0.5*(c.lower + c.upper);
+    const point mid = 0.5*(c.lower + c.upper);
     const scalar zMid = c.nDim == 3 ? mid.z : 0;
     c.x.push_back({c.lower.x - 0.3*s, mid.y, zMid});
     c.x.push_back({mid.x, c.lower.y - 1e-3*s, zMid});
@@ -151,7 +151,7 @@ void addOutside(cloud& c)
 // outside (or not finite), or within rounding of the grid boundary.
 enum class where { inside, outside, boundary };
 
-where classify(const cellGrid& g, const vec3& x)
+where classify(const cellGrid& g, const point& x)
 {
     const scalar tol = 1e-9*g.cellSize;
     const int n[3] = {g.nx, g.ny, g.nz};
@@ -177,7 +177,7 @@ where classify(const cellGrid& g, const vec3& x)
 }
 
 // Every check of one list built from positions x0.
-void checkList(const cellList& list, const std::vector<vec3>& x0,
+void checkList(const cellList& list, const std::vector<point>& x0,
                const scalar support)
 {
     const cellGrid& g = list.grid;
@@ -195,7 +195,7 @@ void checkList(const cellList& list, const std::vector<vec3>& x0,
         std::iota(iota.begin(), iota.end(), label(0));
         ASSERT_EQ(sorted, iota) << "order is not a permutation";
     }
-    std::vector<vec3> x(n);
+    std::vector<point> x(n);
     for (label k = 0; k < n; ++k)
     {
         x[k] = x0[list.order[k]];
@@ -358,7 +358,7 @@ void checkCloud(const cloud& c)
         // The expected number inside, where no point is ambiguous.
         label nIn = 0;
         bool ambiguous = false;
-        for (const vec3& p : c.x)
+        for (const point& p : c.x)
         {
             const where w = classify(g, p);
             nIn += w == where::inside;
@@ -390,21 +390,21 @@ void checkCloud(const cloud& c)
     }
 }
 
-cloud makeCloud(const std::string& name, const int nDim, const vec3& lower,
-                const vec3& upper, const scalar support)
+cloud makeCloud(const std::string& name, const int nDim, const point& lower,
+                const point& upper, const scalar support)
 {
     cloud c;
     c.name = name;
     c.nDim = nDim;
-    c.lower = nDim == 3 ? lower : vec3{lower.x, lower.y, 0};
-    c.upper = nDim == 3 ? upper : vec3{upper.x, upper.y, 0};
+    c.lower = nDim == 3 ? lower : point{lower.x, lower.y, 0};
+    c.upper = nDim == 3 ? upper : point{upper.x, upper.y, 0};
     c.support = support;
     return c;
 }
 
 // A decimal (non-dyadic) domain and support, as in a case file.
-const vec3 decLower{-0.3, -0.2, -0.1};
-const vec3 decUpper{0.7, 0.5, 0.4};
+const point decLower{-0.3, -0.2, -0.1};
+const point decUpper{0.7, 0.5, 0.4};
 const scalar decSupport = 0.07;
 
 } // End anonymous namespace
@@ -503,7 +503,7 @@ TEST(cellList, largeCloudSerialEqualsOpenmp)
         EXPECT_TRUE(a.cellStart == b.cellStart);
         EXPECT_TRUE(std::is_sorted(b.keys.begin(), b.keys.end()));
 
-        std::vector<vec3> x(n);
+        std::vector<point> x(n);
         for (label k = 0; k < n; ++k)
         {
             x[k] = c.x[b.order[k]];
@@ -554,7 +554,7 @@ TEST(cellList, kindRangesAndWalks)
                                             divisor, nDim);
             cellList l;
             buildCellList(openmpExec{}, g, c.x.data(), kind.data(), n, l);
-            std::vector<vec3> x(l.nInside);
+            std::vector<point> x(l.nInside);
             std::vector<std::uint8_t> k(l.nInside);
             for (label s = 0; s < l.nInside; ++s)
             {
@@ -664,7 +664,7 @@ TEST(cellList, pairJustInsideSupportIsFound)
     };
     for (const pairCase& pc : cases)
     {
-        const std::vector<vec3> x{{pc.xi, 0.5, 0}, {pc.xj, 0.5, 0}};
+        const std::vector<point> x{{pc.xi, 0.5, 0}, {pc.xj, 0.5, 0}};
         ASSERT_LT(magSqr(x[0] - x[1]), pc.support*pc.support);
         const cellGrid g = makeCellGrid({pc.lower, 0, 0},
             {pc.lower + 1, 1, 0}, pc.support, pc.divisor, 2);
@@ -707,7 +707,7 @@ TEST(cellList, emptyAndAllOutside)
             EXPECT_EQ(s, 0);
         }
 
-        const std::vector<vec3> out{{-1, 0.5, 0}, {NaN, 0, 0}, {2, 2, 0}};
+        const std::vector<point> out{{-1, 0.5, 0}, {NaN, 0, 0}, {2, 2, 0}};
         if (backend == 0)
         {
             buildCellList(serialExec{}, g, out.data(), nullptr, 3, list);
@@ -723,7 +723,7 @@ TEST(cellList, emptyAndAllOutside)
         }
 
         // One particle in the last cell, one outside.
-        const std::vector<vec3> one{{2, 2, 0}, {1, 1, 0}};
+        const std::vector<point> one{{2, 2, 0}, {1, 1, 0}};
         if (backend == 0)
         {
             buildCellList(serialExec{}, g, one.data(), nullptr, 2, list);
@@ -773,7 +773,7 @@ TEST(cellList, makeCellGridErrors)
 {
     // Exact cell membership of points on cell faces, in double digits.
     SPHVCPM_DOUBLE_ONLY();
-    const vec3 lo{0, 0, 0}, hi{1, 1, 1};
+    const point lo{0, 0, 0}, hi{1, 1, 1};
     EXPECT_THROW(makeCellGrid(lo, hi, 0, 1, 3), FatalError);
     EXPECT_THROW(makeCellGrid(lo, hi, -0.1, 1, 3), FatalError);
     EXPECT_THROW(makeCellGrid(lo, hi, NaN, 1, 3), FatalError);

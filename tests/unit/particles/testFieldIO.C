@@ -132,7 +132,7 @@ TEST(fieldIO, binaryLayout)
     writeFoamFileHeader(os, h);
     // 64-bit scalars on disk in every build (a single build widens).
     std::vector<double> wide;
-    for (const vec3& x : body.position())
+    for (const point& x : body.position())
     {
         wide.insert(wide.end(), {double(x.x), double(x.y), double(x.z)});
     }
@@ -214,7 +214,7 @@ TEST(fieldIO, asciiWritesTheRequestedPrecision)
             EXPECT_NE(text.find("\n" + s + "\n"), std::string::npos) << s;
             EXPECT_EQ(back.scalarField("rho")[i],
                       scalar(std::strtod(s.c_str(), 0)));
-            const vec3& p = body.position()[i];
+            const point& p = body.position()[i];
             const std::string v = "(" + printfG(p.x, precision) + " "
                 + printfG(p.y, precision) + " " + printfG(p.z, precision)
                 + ")";
@@ -289,7 +289,7 @@ TEST(fieldIO, readsOpenFOAMsOtherAsciiForms)
         readField(dir.path()/f, body);
     }
     EXPECT_EQ(body.scalarField("rho"), (std::vector<scalar>{1, 2.5, -300, 4}));
-    EXPECT_EQ(body.position(), std::vector<vec3>(4, vec3{1, 2, 3}));
+    EXPECT_EQ(body.position(), std::vector<point>(4, point{1, 2, 3}));
     EXPECT_EQ(body.labelField("cell"), std::vector<label>(4, -7));
     EXPECT_EQ(body.id(), (std::vector<label>{3, 1, 0, 9}));
     // Reading ids restores the next id: one past the largest.

@@ -46,7 +46,7 @@ particleBody taggedBody(label n)
     for (label i = 0; i < n; ++i)
     {
         const label id = body.id()[i];
-        body.position()[i] = positionOf(id);
+        body.position()[i] = toPoint(positionOf(id));
         rho[i] = rhoOf(id);
         U[i] = -positionOf(id);
         tag[i] = tagOf(id);
@@ -60,7 +60,7 @@ void expectTagged(const particleBody& body)
     for (label i = 0; i < body.size(); ++i)
     {
         const label id = body.id()[i];
-        EXPECT_EQ(body.position()[i], positionOf(id)) << i;
+        EXPECT_EQ(body.position()[i], toPoint(positionOf(id))) << i;
         EXPECT_EQ(body.scalarField("rho")[i], rhoOf(id)) << i;
         EXPECT_EQ(body.vectorField("U")[i], -positionOf(id)) << i;
         EXPECT_EQ(body.labelField("tag")[i], tagOf(id)) << i;
@@ -170,6 +170,11 @@ TEST(particleBody, missingFieldNamesBodyFieldAndFieldsPresent)
         "it is a scalarField"});
     err = catchFatal([&]{ cbody.labelField("position"); });
     expectMessage(err, {"no labelField 'position'", "it is a vectorField"});
+    // Positions are points (double in every build): position() holds them.
+    err = catchFatal([&]{ cbody.vectorField("position"); });
+    expectMessage(err, {"no vectorField 'position'",
+        "it is a vectorField of points, position()"});
+    EXPECT_EQ(body.kindOf("position"), fieldKind::vectorField);
     err = catchFatal([&]{ body.kindOf("T"); });
     expectMessage(err, {"has no field 'T'"});
     // Adding a field under a name of another kind is the same error.
@@ -204,7 +209,7 @@ TEST(particleBody, resizeAndAppendGiveFreshIds)
     const label i = body.append({1, 2, 0});
     EXPECT_EQ(i, 3);
     EXPECT_EQ(body.size(), 4);
-    EXPECT_EQ(body.position()[3], (vec3{1, 2, 0}));
+    EXPECT_EQ(body.position()[3], (point{1, 2, 0}));
     EXPECT_EQ(body.id()[3], 5);
     EXPECT_EQ(body.scalarField("rho")[3], 0);
     EXPECT_EQ(body.nextId(), 6);
@@ -291,6 +296,7 @@ TEST(particleBody, removeKeepsIdsWithTheirParticles)
     {
         const std::size_t n = body.kindOf(f) == fieldKind::scalarField
             ? body.scalarField(f).size()
+            : particleBody::isPointField(f) ? body.position().size()
             : body.kindOf(f) == fieldKind::vectorField
             ? body.vectorField(f).size() : body.labelField(f).size();
         EXPECT_EQ(n, 6u) << f;

@@ -150,7 +150,7 @@ struct tankScene
                   {"lid", bodyType::wall, dp},
                   {"gate", bodyType::solid, dp}};
 
-        struct particle { vec3 x; std::uint8_t kind, body; };
+        struct particle { point x; std::uint8_t kind, body; };
         std::vector<particle> ps;
         for (int j = 0; j < 20; ++j)
         {

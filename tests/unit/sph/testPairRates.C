@@ -87,7 +87,7 @@ struct cloud
         for (label i = 0; i < n; ++i) perm[i] = i;
         std::shuffle(perm.begin(), perm.end(), gen);
         f.reorder(perm, n, sps, false);
-        const vec3 upper{(nx + 1)*dp, (ny + 1)*dp, (nz + 1)*dp};
+        const point upper{(nx + 1)*dp, (ny + 1)*dp, (nz + 1)*dp};
         const cellGrid grid = makeCellGrid({-dp, -dp, nDim == 3 ? -dp : 0},
             upper, 2*h, divisor, nDim);
         buildCellList(openmpExec{}, grid, f.position.data(), f.kind.data(), n,

@@ -28,10 +28,10 @@ namespace
 
 // * * * * * * * * * * * * * * * * Helpers  * * * * * * * * * * * * * * * * //
 
-std::vector<vec3> block(const int nx, const int ny, const int nz,
-                        const scalar l0)
+std::vector<point> block(const int nx, const int ny, const int nz,
+                         const scalar l0)
 {
-    std::vector<vec3> X;
+    std::vector<point> X;
     for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
@@ -41,12 +41,12 @@ std::vector<vec3> block(const int nx, const int ny, const int nz,
     return X;
 }
 
-void perturb(std::vector<vec3>& x, const scalar amplitude, const int nDim,
+void perturb(std::vector<point>& x, const scalar amplitude, const int nDim,
              const unsigned seed)
 {
     std::mt19937 gen(seed);
     std::uniform_real_distribution<scalar> u(-amplitude, amplitude);
-    for (vec3& p : x)
+    for (point& p : x)
     {
         p.x += u(gen);
         p.y += u(gen);
@@ -119,8 +119,8 @@ stressTensor minus(const stressTensor& a, const stressTensor& b)
 // their partners' bonds are complete.
 std::vector<label> interior(const vcpmSolid& s)
 {
-    vec3 lo = s.reference()[0], hi = lo;
-    for (const vec3& p : s.reference())
+    point lo = s.reference()[0], hi = lo;
+    for (const point& p : s.reference())
     {
         for (int d = 0; d < 3; ++d)
         {
@@ -135,7 +135,7 @@ std::vector<label> interior(const vcpmSolid& s)
         bool deep = true;
         for (int d = 0; d < s.material().nDim(); ++d)
         {
-            const vec3& X = s.reference()[p];
+            const point& X = s.reference()[p];
             deep = deep && X[d] > lo[d] + 1.5*l0 && X[d] < hi[d] - 1.5*l0;
         }
         if (deep) in.push_back(p);
@@ -244,7 +244,7 @@ TEST(vcpmBondList, countsPerLayer)
 
 TEST(vcpmBondList, rejectsOverlappingParticles)
 {
-    std::vector<vec3> X = block(3, 3, 1, 0.01);
+    std::vector<point> X = block(3, 3, 1, 0.01);
     X.push_back({0.001, 0, 0});
     EXPECT_THROW(bondList(X, 0.01), FatalError);
 }
@@ -298,7 +298,7 @@ TEST_P(vcpmLatticeCases, momentumConserved)
     for (label p = 0; p < s.size(); ++p)
     {
         F += s.force[p];
-        M += cross(s.position[p], s.force[p]);
+        M += cross(toVec3(s.position[p]), s.force[p]);
         scaleF += mag(s.force[p]);
         scaleM += mag(s.position[p])*mag(s.force[p]);
     }
@@ -317,13 +317,13 @@ TEST_P(vcpmLatticeCases, rigidRotationIsStressFree)
     const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid s = makeSolid(m, 5, 4, 4);
     // 90 degrees about z (2D) or about (1, 1, 1)/sqrt(3) (3D), plus a shift.
-    for (vec3& x : s.position)
+    for (point& x : s.position)
     {
-        if (m.nDim() == 2) x = vec3{-x.y, x.x, 0} + vec3{0.3, -0.2, 0};
+        if (m.nDim() == 2) x = point{-x.y, x.x, 0} + point{0.3, -0.2, 0};
         else
         {
-            const vec3 n{1/std::sqrt(3.0), 1/std::sqrt(3.0), 1/std::sqrt(3.0)};
-            x = dot(n, x)*n + cross(n, x) + vec3{0.3, -0.2, 0.1};
+            const point n{1/std::sqrt(3.0), 1/std::sqrt(3.0), 1/std::sqrt(3.0)};
+            x = dot(n, x)*n + cross(n, x) + point{0.3, -0.2, 0.1};
         }
     }
     s.computeForces(serialExec{});
@@ -374,7 +374,7 @@ TEST_P(vcpmLatticeCases, affineStrainGivesContinuumStressAndEnergy)
     }
     for (label p = 0; p < s.size(); ++p)
     {
-        const vec3 X = s.reference()[p];
+        const point X = s.reference()[p];
         for (int i = 0; i < 3; ++i)
         {
             s.position[p][i] = X[i] + e[i][0]*X.x + e[i][1]*X.y + e[i][2]*X.z;
@@ -420,7 +420,7 @@ TEST_P(vcpmLatticeCases, uniaxialStressPoissonContraction)
     const scalar Eeff = strain2D ? m.E/(1 - m.nu*m.nu) : m.E;
     for (label p = 0; p < s.size(); ++p)
     {
-        const vec3 X = s.reference()[p];
+        const point X = s.reference()[p];
         s.position[p] = {X.x*(1 + eps), X.y*(1 + lateral),
                          X.z*(1 + (m.nDim() == 3 ? lateral : 0))};
     }
@@ -504,7 +504,7 @@ TEST_P(vcpmLatticeCases, latticeDampingTakesTheHighestMode)
         s.latticeDamping = zeta;
         for (label p = 0; p < s.size(); ++p)
         {
-            const vec3 X = s.reference()[p]/m.l0;
+            const point X = s.reference()[p]/double(m.l0);
             const long parity = std::lround(X.x + X.y + X.z) % 2;
             s.velocity[p].y = parity ? 1e-3 : -1e-3;
         }
@@ -547,7 +547,7 @@ TEST_P(vcpmLatticeCases, latticeDampingTakesTheHighestMode)
     const vec3 w{0, 0, 50};
     for (label p = 0; p < s.size(); ++p)
     {
-        s.velocity[p] = cross(w, s.position[p]) + vec3{0.1, -0.2, 0};
+        s.velocity[p] = cross(w, toVec3(s.position[p])) + vec3{0.1, -0.2, 0};
     }
     s.computeForces(serialExec{});
     scalar diff = 0;
@@ -700,8 +700,8 @@ tensionResult uniformTension(const scalar nu, const planeModel plane,
     label n1 = 0, n2 = 0, nTop = 0, nBottom = 0;
     for (label p = 0; p < s.size(); ++p)
     {
-        const vec3& X = s.reference()[p];
-        const vec3 u = s.position[p] - X;
+        const point& X = s.reference()[p];
+        const vec3 u = toVec3(s.position[p] - X);
         const long i = std::lround(X.x/m.l0), j = std::lround(X.y/m.l0);
         if (i == i1) { u1 += u.x; ++n1; }
         if (i == i2) { u2 += u.x; ++n2; }
@@ -1067,10 +1067,10 @@ TEST(vcpmSurfaceCorrection, simpleCubicPlateStrip)
             const vcpmMaterial m = material(sc, pStrain, nu, 0.01, surface);
             vcpmSolid s(m, block(nx, ny, nz, m.l0));
             const scalar kappa = 1e-6/m.l0, nuP = nu/(1 - nu);
-            const vec3 c{nx/2*m.l0, 0.5*(ny - 1)*m.l0, nz/2*m.l0};
+            const point c{nx/2*m.l0, 0.5*(ny - 1)*m.l0, nz/2*m.l0};
             for (label p = 0; p < s.size(); ++p)
             {
-                const vec3 X = s.reference()[p] - c;
+                const vec3 X = toVec3(s.reference()[p] - c);
                 s.position[p] = s.reference()[p] + kappa*vec3{X.x*X.y,
                     -0.5*(X.x*X.x + nuP*X.y*X.y), 0};
             }
@@ -1080,7 +1080,7 @@ TEST(vcpmSurfaceCorrection, simpleCubicPlateStrip)
             scalar sum = 0;
             for (label p = 0; p < s.size(); ++p)
             {
-                const vec3 X = s.reference()[p] - c;
+                const vec3 X = toVec3(s.reference()[p] - c);
                 if (std::abs(X.x) + std::abs(X.z) < 0.1*m.l0) sum += U(p);
             }
             const scalar H = ny*m.l0;
@@ -1115,7 +1115,7 @@ TEST(vcpmSurfaceCorrection, uniformStrainEnergyOnFaces)
                                  lat == sc ? a : 0}};
         for (label p = 0; p < s.size(); ++p)
         {
-            const vec3 X = s.reference()[p];
+            const point X = s.reference()[p];
             for (int i = 0; i < 3; ++i)
             {
                 s.position[p][i] =

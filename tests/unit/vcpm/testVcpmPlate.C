@@ -68,7 +68,7 @@ plateResult runPlate(const int nLayers, const scalar Vf, const scalar Texp,
     std::vector<label> tip;
     for (label p = 0; p < s.size(); ++p)
     {
-        const vec3& X = s.reference()[p];
+        const point& X = s.reference()[p];
         s.clamped[p] = X.x < 0;
         if (X.x > 0) s.velocity[p].y = Vf*c0*firstMode(X.x/L);
         if (X.x > L - l0) tip.push_back(p);
