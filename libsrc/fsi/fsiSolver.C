@@ -595,7 +595,7 @@ void fsiSolver::setDomain(const bool onGpu)
 
 hostParticleStore fsiSolver::hostStore()
 {
-    return {particles_, cells_, cellHasFluid_, nearFluid_, viscTerm_};
+    return {particles_, cells_, nearFluid_, viscTerm_};
 }
 
 

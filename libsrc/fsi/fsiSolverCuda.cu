@@ -74,7 +74,7 @@ struct cudaParticleStore
     cellGrid grid;
     label nInside = 0;
     deviceBuffer<std::uint32_t> keysOf;
-    deviceBuffer<label> order, cellStartOf, kindEndOf;
+    deviceBuffer<label> order, cellStartOf, kindEndOf, rowStartOf;
     deviceBuffer<std::uint8_t> cellHasFluidOf, nearFluidOf;
     deviceBuffer<scalar> viscTermOf;
 
@@ -155,9 +155,14 @@ struct cudaParticleStore
                                   keysOf.data(), order.data()});
             sortByKey(cudaExec{}, keysOf.data(), order.data(), n);
         }
+        const label nRows = grid.nCells()/grid.nx;
+        label* rowStart = atLeast(rowStartOf, nRows + 1);
+        parallelFor(cudaExec{}, nRows + 1,
+            detail::rowStartOp{keysOf.data(), rowStart, n, grid.nx});
         parallelFor(cudaExec{}, grid.nCells() + 1,
-            detail::cellStartOp{keysOf.data(), cellStart, kindEnd, n,
-                                grid.nCells()});
+            detail::cellStartOp{keysOf.data(), rowStart, cellStart, kindEnd,
+                                atLeast(cellHasFluidOf, grid.nCells()), n,
+                                grid.nCells(), grid.nx});
         copyDeviceToHost(&nInside, cellStart + grid.nCells(), sizeof(label));
         return nInside;
     }
@@ -221,9 +226,9 @@ struct cudaParticleStore
     const label* kindEnd() const { return kindEndOf.data(); }
     const std::uint32_t* keys() const { return keysOf.data(); }
 
-    std::uint8_t* cellHasFluid(const label nCells)
+    const std::uint8_t* cellHasFluid() const
     {
-        return atLeast(cellHasFluidOf, nCells);
+        return cellHasFluidOf.data();
     }
     std::uint8_t* nearFluid(const label m) { return atLeast(nearFluidOf, m); }
     scalar* viscTerm(const label m) { return atLeast(viscTermOf, m); }

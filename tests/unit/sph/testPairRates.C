@@ -40,7 +40,7 @@ struct cloud
     cellList cells;
     particleFields f;
     pairConstants c;
-    std::vector<std::uint8_t> cellHasFluid, nearFluid;
+    std::vector<std::uint8_t> nearFluid;
     label n = 0;
 
     // A jittered lattice of nx x ny (x nz) nodes; the lowest six layers are
@@ -94,12 +94,9 @@ struct cloud
                       cells);
         f.reorder(cells.order, cells.nInside, sps, false);
         parallelFor(openmpExec{}, n, inverseDensityOp{f.view()});
-        cellHasFluid.resize(grid.nCells());
         nearFluid.resize(n);
-        parallelFor(openmpExec{}, grid.nCells(), cellHasFluidOp{
-            cells.cellStart.data(), cells.kindEnd.data(), cellHasFluid.data()});
         parallelFor(openmpExec{}, n, nearFluidOp{grid, cells.keys.data(),
-            f.kind.data(), cellHasFluid.data(), nearFluid.data()});
+            f.kind.data(), cells.hasFluid.data(), nearFluid.data()});
 
         c.h = h;
         c.support2 = 4*h*h;
