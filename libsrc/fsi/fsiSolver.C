@@ -159,8 +159,7 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         << " cells of " << grid_.cellSize << " m\n"
         << "    " << particles_.bytesPerParticle() + sizeof(std::uint8_t)
         << " bytes per particle and "
-        << 3*sizeof(label) + sizeof(std::uint8_t)
-        << " per cell\n" << std::endl;
+        << 3*sizeof(label) << " per cell\n" << std::endl;
 
     functions_ = functionObject::readAll(control_.dict, caseDir_,
         startTimeName_, model_, bodies_);

@@ -75,7 +75,8 @@ struct cudaParticleStore
     label nInside = 0;
     deviceBuffer<std::uint32_t> keysOf;
     deviceBuffer<label> order, cellStartOf, kindEndOf, rowStartOf;
-    deviceBuffer<std::uint8_t> cellHasFluidOf, nearFluidOf;
+    deviceBuffer<std::uint32_t> blockHasFluidOf;
+    deviceBuffer<std::uint8_t> nearFluidOf;
     deviceBuffer<scalar> viscTermOf;
 
     // The coupling, when there are solids (its arrays are on the GPU).
@@ -159,10 +160,13 @@ struct cudaParticleStore
         label* rowStart = atLeast(rowStartOf, nRows + 1);
         parallelFor(cudaExec{}, nRows + 1,
             detail::rowStartOp{keysOf.data(), rowStart, n, grid.nx});
+        std::uint32_t* blockHasFluid =
+            atLeast(blockHasFluidOf, grid.nBlocks());
+        parallelFor(cudaExec{}, grid.nBlocks(),
+                    detail::clearFlagsOp{blockHasFluid});
         parallelFor(cudaExec{}, grid.nCells() + 1,
             detail::cellStartOp{keysOf.data(), rowStart, cellStart, kindEnd,
-                                atLeast(cellHasFluidOf, grid.nCells()), n,
-                                grid.nCells(), grid.nx});
+                                blockHasFluid, n, grid});
         copyDeviceToHost(&nInside, cellStart + grid.nCells(), sizeof(label));
         return nInside;
     }
@@ -226,9 +230,9 @@ struct cudaParticleStore
     const label* kindEnd() const { return kindEndOf.data(); }
     const std::uint32_t* keys() const { return keysOf.data(); }
 
-    const std::uint8_t* cellHasFluid() const
+    const std::uint32_t* blockHasFluid() const
     {
-        return cellHasFluidOf.data();
+        return blockHasFluidOf.data();
     }
     std::uint8_t* nearFluid(const label m) { return atLeast(nearFluidOf, m); }
     scalar* viscTerm(const label m) { return atLeast(viscTermOf, m); }

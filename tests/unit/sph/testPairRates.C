@@ -96,7 +96,7 @@ struct cloud
         parallelFor(openmpExec{}, n, inverseDensityOp{f.view()});
         nearFluid.resize(n);
         parallelFor(openmpExec{}, n, nearFluidOp{grid, cells.keys.data(),
-            f.kind.data(), cells.hasFluid.data(), nearFluid.data()});
+            f.kind.data(), cells.blockHasFluid.data(), nearFluid.data()});
 
         c.h = h;
         c.support2 = 4*h*h;
