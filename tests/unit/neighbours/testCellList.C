@@ -544,9 +544,15 @@ TEST(cellList, kindRangesAndWalks)
         // A dense block (a fine solid in coarse cells) and a pile.
         addClusters(c, gen, 2, 300, 0.01);
         const label n = label(c.x.size());
+        // All kinds mixed for x < 0.15, walls and solids only beyond:
+        // cells far from any fluid for the block flags below.
         std::vector<std::uint8_t> kind(n);
-        std::uniform_int_distribution<int> pickKind(0, 2);
-        for (auto& k : kind) k = std::uint8_t(pickKind(gen));
+        std::uniform_int_distribution<int> pickKind(0, 2), pickDry(1, 2);
+        for (label i = 0; i < n; ++i)
+        {
+            kind[i] = std::uint8_t(c.x[i].x < 0.15 ? pickKind(gen)
+                                                   : pickDry(gen));
+        }
 
         for (const int divisor : {1, 2, 3})
         {
@@ -637,6 +643,36 @@ TEST(cellList, kindRangesAndWalks)
             EXPECT_GT(expected.size(), 1000u);
             EXPECT_TRUE(met == expected) << "met " << met.size()
                 << " pairs, expected " << expected.size();
+
+            // The blocks that hold fluid: flagged exactly, and every cell
+            // with fluid in its stencil sees a flagged block around its
+            // own (the walls' "fluid near" test, a superset).
+            ASSERT_EQ(label(l.blockHasFluid.size()), g.nBlocks());
+            std::vector<std::uint32_t> blockFluid(g.nBlocks(), 0);
+            for (label cell = 0; cell < g.nCells(); ++cell)
+            {
+                if (l.kindEnd[2*cell] > l.cellStart[cell])
+                {
+                    blockFluid[g.blockOf(cell)] = 1;
+                }
+            }
+            ASSERT_EQ(l.blockHasFluid, blockFluid);
+            label nNear = 0, nFar = 0;
+            for (label cell = 0; cell < g.nCells(); ++cell)
+            {
+                bool fluidInStencil = false;
+                forEachCellOf(g, g.stencilOf(cell), [&](const label o)
+                {
+                    fluidInStencil = fluidInStencil
+                        || l.kindEnd[2*o] > l.cellStart[o];
+                });
+                const bool seen =
+                    anyBlockFlagAround(g, cell, l.blockHasFluid.data());
+                if (fluidInStencil) ASSERT_TRUE(seen) << "cell " << cell;
+                ++(seen ? nNear : nFar);
+            }
+            EXPECT_GT(nFar, 0) << "divisor " << divisor;
+            EXPECT_GT(nNear, 0) << "divisor " << divisor;
         }
     }
 }
