@@ -156,17 +156,9 @@ struct cudaParticleStore
                                   keysOf.data(), order.data()});
             sortByKey(cudaExec{}, keysOf.data(), order.data(), n);
         }
-        const label nRows = grid.nCells()/grid.nx;
-        label* rowStart = atLeast(rowStartOf, nRows + 1);
-        parallelFor(cudaExec{}, nRows + 1,
-            detail::rowStartOp{keysOf.data(), rowStart, n, grid.nx});
-        std::uint32_t* blockHasFluid =
-            atLeast(blockHasFluidOf, grid.nBlocks());
-        parallelFor(cudaExec{}, grid.nBlocks(),
-                    detail::clearFlagsOp{blockHasFluid});
-        parallelFor(cudaExec{}, grid.nCells() + 1,
-            detail::cellStartOp{keysOf.data(), rowStart, cellStart, kindEnd,
-                                blockHasFluid, n, grid});
+        fillCellRanges(cudaExec{}, grid, keysOf.data(), n,
+                       atLeast(rowStartOf, grid.nRows() + 1), cellStart,
+                       kindEnd, atLeast(blockHasFluidOf, grid.nBlocks()));
         copyDeviceToHost(&nInside, cellStart + grid.nCells(), sizeof(label));
         return nInside;
     }
