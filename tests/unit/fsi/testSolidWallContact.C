@@ -73,7 +73,7 @@ contactPlane planeAt(const point x, const bool sideWall = false)
     f.reorder(list.order, list.nInside, false, false);
     contactPlane plane{{-1, -1, -1}, {-1, -1, -1}};
     parallelFor(openmpExec{}, n, wallContactPlaneOp<wendlandC2Kernel>{k,
-        grid, list.kindEnd.data(), f.view(), rho0, scalar(0.5),
+        grid, list.cellStart.data(), list.kindEnd.data(), f.view(), rho0, scalar(0.5),
         k.support()*k.support(), &plane});
     return plane;
 }

@@ -5,7 +5,8 @@
 // clustered clouds, particles exactly on cell faces (dyadic and decimal
 // cell sizes), particles outside the grid and non-finite positions, cell
 // divisors 1, 2 and 3 (the GPU's default), serial and OpenMP builds (which must agree exactly),
-// the kind ranges and the walks of one kind, and the errors of
+// the kind ranges and the walks of one kind, the walks around a point
+// that reach only the cells within the support, and the errors of
 // makeCellGrid.
 
 #include "cellList.H"
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <iterator>
 #include <limits>
 #include <numeric>
@@ -597,23 +599,29 @@ TEST(cellList, kindRangesAndWalks)
                         expected.insert({i, j});
                     }
                 });
-                forEachFluidCandidate(g, l.cellStart.data(),
-                    l.kindEnd.data(), x[i], [&](label j)
-                { fluid.push_back(j); });
-                forEachWallCandidate(g, l.kindEnd.data(), x[i], [&](label j)
-                { walls.push_back(j); });
-                std::vector<label> allFluid, allWalls;
+                std::vector<label> solids;
+                forEachFluidCandidate(g, l.cellStart.data(), l.kindEnd.data(),
+                    k.data(), x[i], [&](label j) { fluid.push_back(j); });
+                forEachWallCandidate(g, l.cellStart.data(), l.kindEnd.data(),
+                    k.data(), x[i], [&](label j) { walls.push_back(j); });
+                forEachCandidateOfKind(g, l.cellStart.data(),
+                    l.kindEnd.data(), k.data(), solidKind, x[i],
+                    [&](label j) { solids.push_back(j); });
+                std::vector<label> allFluid, allWalls, allSolids;
                 for (const label j : all)
                 {
                     if (k[j] == 0) allFluid.push_back(j);
                     if (k[j] == 1) allWalls.push_back(j);
+                    if (k[j] == 2) allSolids.push_back(j);
                 }
-                std::sort(fluid.begin(), fluid.end());
-                std::sort(walls.begin(), walls.end());
-                std::sort(allFluid.begin(), allFluid.end());
-                std::sort(allWalls.begin(), allWalls.end());
+                for (auto* list : {&fluid, &walls, &solids, &allFluid,
+                                   &allWalls, &allSolids})
+                {
+                    std::sort(list->begin(), list->end());
+                }
                 ASSERT_EQ(fluid, allFluid) << "particle " << i;
                 ASSERT_EQ(walls, allWalls) << "particle " << i;
+                ASSERT_EQ(solids, allSolids) << "particle " << i;
 
                 auto meet = [&](label j)
                 {
@@ -681,6 +689,128 @@ TEST(cellList, kindRangesAndWalks)
 // separately, would lie more than reach cells apart with cells of exactly
 // support/divisor (found by a search over decimal domains and supports);
 // makeCellGrid makes cells a relative 1e-9 larger to leave that margin.
+// The walks around a point, both shapes (forEachRowAround): they meet every
+// pair within the support after the particles moved by up to searchSkin
+// since the sort, and they walk the share of the stencil's candidates
+// that their shape gives, well under it for the ball. The host's
+// forEachCandidate is the box walk.
+TEST(cellList, walksAroundAPointFindMovedParticles)
+{
+    for (const int nDim : {2, 3})
+    {
+        std::mt19937_64 gen(71 + nDim);
+        cloud c = makeCloud("moved", nDim, {0, 0, 0}, {0.4, 0.3, 0.2}, 0.05);
+        addUniform(c, gen, nDim == 3 ? 6000 : 2000);
+        const label n = label(c.x.size());
+        for (const int divisor : {1, 2, 3})
+        {
+            const cellGrid g = makeCellGrid(c.lower, c.upper, c.support,
+                                            divisor, nDim);
+            cellList l;
+            buildCellList(serialExec{}, g, c.x.data(), nullptr, n, l);
+            ASSERT_EQ(l.nInside, n);
+            // Each particle moved since the sort, by just under the skin.
+            const scalar step = 0.999*searchSkin*c.support;
+            std::vector<point> x(n);
+            for (label s = 0; s < n; ++s)
+            {
+                const vec3 d{uniform(gen, -1, 1), uniform(gen, -1, 1),
+                             nDim == 3 ? uniform(gen, -1, 1) : 0};
+                x[s] = c.x[l.order[s]]
+                     + (step/std::max(mag(d), scalar(1e-12)))*d;
+            }
+            const scalar s2 = c.support*c.support;
+
+            // The candidates of particle i's walk of shape `shape`.
+            auto walk = [&](const walkShape shape, const label i)
+            {
+                std::vector<label> all;
+                auto rows = [&](const label row, const int x0, const int x1)
+                {
+                    for (label j = l.cellStart[row + x0];
+                         j < l.cellStart[row + x1 + 1]; ++j)
+                    {
+                        all.push_back(j);
+                    }
+                };
+                if (shape == walkShape::ball)
+                {
+                    forEachRowAround<walkShape::ball>(g, x[i], rows);
+                }
+                else
+                {
+                    forEachRowAround<walkShape::box>(g, x[i], rows);
+                }
+                return all;
+            };
+
+            for (const walkShape shape : {walkShape::ball, walkShape::box})
+            {
+                const bool ball = shape == walkShape::ball;
+                SCOPED_TRACE(std::to_string(nDim) + "D, divisor "
+                    + std::to_string(divisor) + (ball ? ", ball" : ", box"));
+                label walked = 0, stencilWalked = 0;
+                for (label i = 0; i < n; ++i)
+                {
+                    const std::vector<label> all = walk(shape, i);
+                    walked += label(all.size());
+                    std::vector<label> found, brute;
+                    for (const label j : all)
+                    {
+                        if (magSqr(x[i] - x[j]) < s2) found.push_back(j);
+                    }
+                    for (label j = 0; j < n; ++j)
+                    {
+                        if (magSqr(x[i] - x[j]) < s2) brute.push_back(j);
+                    }
+                    std::sort(found.begin(), found.end());
+                    std::vector<label> missed;
+                    std::set_difference(brute.begin(), brute.end(),
+                        found.begin(), found.end(), std::back_inserter(missed));
+                    for (const label j : missed)
+                    {
+                        ADD_FAILURE() << "particle " << i << " at " << x[i].x
+                            << " " << x[i].y << " " << x[i].z << " misses "
+                            << j << " at " << x[j].x << " " << x[j].y << " "
+                            << x[j].z << " of cell " << cellOfKey(l.keys[j])
+                            << ", r/support " << mag(x[i] - x[j])/c.support;
+                    }
+                    ASSERT_EQ(found, brute) << "particle " << i;
+                    // The whole stencil of its cell.
+                    forEachCellOf(g, g.stencilOf(cellOfKey(l.keys[i])),
+                                  [&](const label o)
+                    {
+                        stencilWalked += l.cellStart[o + 1] - l.cellStart[o];
+                    });
+                    if (!ball && i % 7 == 0)
+                    {
+                        std::vector<label> host;
+                        forEachCandidate(g, l.cellStart.data(), x[i],
+                                         [&](label j) { host.push_back(j); });
+                        ASSERT_EQ(host, all) << "particle " << i;
+                    }
+                }
+                // The walk's cells against the stencil's, averaged over
+                // points uniform in a cell (computed apart) for divisors
+                // 1, 2, 3: the ball of 1.05 supports 0.964, 0.931, 0.914
+                // (2D) and 0.834, 0.752, 0.712 (3D); its box
+                // ((2.1 d + 1)/(2 d + 1))^dim, 1.068, 1.082, 1.088 and
+                // 1.103, 1.125, 1.134. The cloud's edges, which cut both,
+                // move it a little.
+                const double expected[2][2][3] =
+                    {{{0.964, 0.931, 0.914}, {0.834, 0.752, 0.712}},
+                     {{1.068, 1.082, 1.088}, {1.103, 1.125, 1.134}}};
+                const double fraction = double(walked)/stencilWalked;
+                std::cout << nDim << "D, divisor " << divisor
+                          << (ball ? ", ball" : ", box") << ": walked "
+                          << fraction << " of the stencil's candidates\n";
+                EXPECT_NEAR(fraction, expected[!ball][nDim - 2][divisor - 1],
+                            0.04);
+            }
+        }
+    }
+}
+
 TEST(cellList, pairJustInsideSupportIsFound)
 {
     // Exact cell membership of points on cell faces, in double digits.
