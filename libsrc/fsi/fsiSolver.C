@@ -570,18 +570,8 @@ void fsiSolver::setDomain(const bool onGpu)
     }
     if (model_.cellDivisor == 0)
     {
-        // Not given: cells of h on the CPU; on the GPU cells of 2h/3, which
-        // walk fewer candidates per neighbour (1.2-1.35 times faster in
-        // 3D, docs/benchmarks.md), unless, holding about a particle's
-        // volume each, they would far outnumber the particles (a domain
-        // mostly empty, or too large for the 32-bit cell keys).
-        double cells = 1;
-        for (int d = 0; d < model_.nDimensions; ++d)
-        {
-            cells *= std::ceil((hi[d] - lo[d])/(2*model_.h/3));
-        }
-        model_.cellDivisor = onGpu && cells <= 16.0*particles_.size()
-                          && cells < double(1 << 29) ? 3 : 2;
+        model_.cellDivisor = defaultCellDivisor(lo, hi, 2*model_.h,
+            model_.nDimensions, particles_.size(), onGpu);
     }
     grid_ = makeCellGrid(lo, hi, 2*model_.h, model_.cellDivisor,
                          model_.nDimensions);

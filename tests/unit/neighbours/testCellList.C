@@ -963,3 +963,33 @@ TEST(cellList, makeCellGridErrors)
     EXPECT_EQ(thin.nz, 1);
     EXPECT_EQ(thin.nx, 20);    // floor(1/(0.05 (1 + 1e-9))) + 1
 }
+
+// The divisor a case that gives none gets: cells of h on the CPU, of 2h/3
+// on the GPU unless they would far outnumber the particles, and of 2h
+// where cells of h would not fit the 32-bit cell keys; makeCellGrid then
+// accepts it.
+TEST(cellList, defaultCellDivisor)
+{
+    const point lo{0, 0, 0};
+    const scalar support = 0.003;
+    // A 0.3 m cube: 300^3 = 2.7e7 cells of 2h/3 = 1 mm.
+    const point cube{0.3, 0.3, 0.3};
+    EXPECT_EQ(defaultCellDivisor(lo, cube, support, 3, 2000000, true), 3);
+    EXPECT_EQ(defaultCellDivisor(lo, cube, support, 3, 2000000, false), 2);
+    // Few particles in it: cells of 2h/3 would be 16 times as many.
+    EXPECT_EQ(defaultCellDivisor(lo, cube, support, 3, 1000000, true), 2);
+    // 1.6 m: 1067^3 cells of h = 1.5 mm pass 2^30; 534^3 of 2h do not.
+    const point large{1.6, 1.6, 1.6};
+    for (const bool gpu : {true, false})
+    {
+        const int divisor =
+            defaultCellDivisor(lo, large, support, 3, 500000000, gpu);
+        EXPECT_EQ(divisor, 1);
+        EXPECT_THROW(makeCellGrid(lo, large, support, 2, 3), FatalError);
+        const cellGrid g = makeCellGrid(lo, large, support, divisor, 3);
+        EXPECT_EQ(g.nx, 534);
+    }
+    // 2D counts two directions only.
+    EXPECT_EQ(defaultCellDivisor(lo, {1.5, 1.5, 1e9}, support, 2, 1000000,
+                                 true), 3);
+}
