@@ -43,6 +43,25 @@ struct cloud
     std::vector<point> x;
 };
 
+// Calls visit(c) for every cell c of the stencil st: the reach cells each
+// way around a cell, which the block flags and the walks are measured
+// against.
+template<class F>
+void forEachCellOf(const cellGrid& g, const stencil& st, const F& visit)
+{
+    for (int z = st.z0; z <= st.z1; ++z)
+    {
+        for (int y = st.y0; y <= st.y1; ++y)
+        {
+            const label row = g.rowStart(z, y);
+            for (int x = st.x0; x <= st.x1; ++x)
+            {
+                visit(row + x);
+            }
+        }
+    }
+}
+
 scalar uniform(std::mt19937_64& gen, const scalar a, const scalar b)
 {
     return std::uniform_real_distribution<scalar>(a, b)(gen);
