@@ -433,7 +433,8 @@ void fsiSolver::setSoundSpeed()
     fluidHeight_ = gMag > 0 ? hi - lo + model_.dp : 0;
 
     const std::string file = (caseDir_/"constant/fluidProperties").string();
-    const scalar uGravity = std::sqrt(gMag*fluidHeight_);
+    const scalar speedSystem = model_.speedSystem > 0
+      ? model_.speedSystem : std::sqrt(gMag*fluidHeight_);
     if (model_.coefSound > 0 && restartC0_ > 0)
     {
         // The c0 of the run's start: a restart must not re-derive it from
@@ -442,7 +443,7 @@ void fsiSolver::setSoundSpeed()
     }
     else if (model_.coefSound > 0)
     {
-        model_.c0 = model_.coefSound*std::max(uGravity, std::sqrt(u2));
+        model_.c0 = model_.coefSound*std::max(speedSystem, std::sqrt(u2));
         if (!(model_.c0 > 0))
         {
             fatalIOError(file, 0, "coefSound needs gravity or an initial"
@@ -451,17 +452,21 @@ void fsiSolver::setSoundSpeed()
     }
 
     // Weak compressibility needs c0 >= 10 U; the largest speed expected is
-    // the free-fall speed over the fluid height or the initial speed.
-    const scalar uExpected = std::max(std::sqrt(2*gMag*fluidHeight_),
-                                      std::sqrt(u2));
+    // the case's speedSystem, else the free-fall speed over the fluid
+    // height, or the initial speed if larger.
+    const scalar uExpected = std::max(model_.speedSystem > 0
+        ? model_.speedSystem : std::sqrt(2*gMag*fluidHeight_), std::sqrt(u2));
     const scalar c0Min = 10*uExpected;
     if (model_.c0 < 3*uExpected)
     {
+        const std::string reaches = model_.speedSystem > 0
+          ? "the fluid reaches about " + str(uExpected) + " m/s (speedSystem)"
+          : "the fluid (height " + str(fluidHeight_) + " m) reaches about "
+            + str(uExpected) + " m/s";
         fatalIOError(file, 0, "the speed of sound c0 = " + str(model_.c0)
-            + " m/s is far too low for this scene: the fluid (height "
-            + str(fluidHeight_) + " m) reaches about " + str(uExpected)
-            + " m/s, so c0 must be at least 10 times that, "
-            + str(c0Min) + " m/s (density errors grow as (U/c0)^2)", "c0");
+            + " m/s is far too low for this scene: " + reaches + ", so c0"
+            " must be at least 10 times that, " + str(c0Min) + " m/s"
+            " (density errors grow as (U/c0)^2)", "c0");
     }
     if (model_.c0 < c0Min)
     {

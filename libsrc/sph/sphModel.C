@@ -267,8 +267,8 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
     {
         const dictionary dict =
             readCaseDict(caseDir, "constant/fluidProperties", true);
-        dict.checkKeywords({"rho0", "nu", "c0", "coefSound", "gamma",
-            "turbulence"});
+        dict.checkKeywords({"rho0", "nu", "c0", "coefSound", "speedSystem",
+            "gamma", "turbulence"});
         m.rho0 = dict.getPositive("rho0");
         m.nu = dict.getOrDefault<scalar>("nu", 1e-6);
         if (!(m.nu >= 0))
@@ -280,8 +280,22 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
         if (hasC0 == hasCoef)
         {
             dict.fatal("give exactly one of c0 (speed of sound [m/s]) and"
-                " coefSound (c0 = coefSound sqrt(g H), H the fluid height)",
+                " coefSound (c0 = coefSound speedSystem, speedSystem by"
+                " default sqrt(g H), H the fluid height)",
                 hasC0 ? "c0" : "c0");
+        }
+        // The largest speed the flow reaches, where the free fall over the
+        // fluid's height overstates it (sloshing, a slow current): sets
+        // c0 with coefSound and the speed the check of c0 expects.
+        if (dict.found("speedSystem"))
+        {
+            m.speedSystem = dict.getDimensioned<scalar>("speedSystem",
+                dimensions::velocity());
+            if (!(m.speedSystem > 0))
+            {
+                dict.fatalAt("speedSystem", "Keyword 'speedSystem': the"
+                    " largest flow speed expected (m/s) must be > 0");
+            }
         }
         if (hasC0)
         {

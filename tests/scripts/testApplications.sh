@@ -76,4 +76,22 @@ expectIn "runApplication passes a failure on" "$scratch/run.status" "^status4=[1
 check "runApplication -s writes log.<app>.<suffix>" \
     [ -f "$scratch/case/log.particlesToVTK.bad" ]
 
+# checkValue: within the limit passes, beyond it or not a finite number
+# (a missing or broken result) fails.
+(
+    cd "$scratch/case" || exit 1
+    . "$SPHVCPM_DIR/bin/tools/RunFunctions"
+    for v in 4.9 -4.9 1e-3 5.1 -nan nan inf -inf "" abc; do
+        validationFailures=0
+        checkValue "value $v" "$v" 5 % > /dev/null
+        echo "value '$v': $validationFailures"
+    done
+) > "$scratch/check.status"
+for v in 4.9 -4.9 1e-3; do
+    expectIn "checkValue passes $v within 5" "$scratch/check.status" "^value '$v': 0$"
+done
+for v in 5.1 -nan nan inf -inf "" abc; do
+    expectIn "checkValue fails '$v' against 5" "$scratch/check.status" "^value '$v': 1$"
+done
+
 finish

@@ -116,6 +116,20 @@ fresh; sed -i 's/^coefSound .*/coefSound 7;/' "$scratch/c/constant/fluidProperti
 check "a low speed of sound only warns: the run ends" grep -q '^End' "$scratch/c/log.solver"
 expectIn "a low speed of sound: warning" "$scratch/c/log.solver" "Warning"
 
+# speedSystem: c0 = coefSound speedSystem, and the check of c0 expects that
+# speed (the free fall over the column's height, 0.2 m, would be 2 m/s).
+fresh; sed -i 's/^coefSound .*/coefSound 10; speedSystem [0 1 -1 0 0 0 0] 0.5;/' \
+    "$scratch/c/constant/fluidProperties"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+check "speedSystem 0.5, coefSound 10: the run ends" grep -q '^End' "$scratch/c/log.solver"
+expectIn "speedSystem 0.5, coefSound 10: c0 = 5 m/s" "$scratch/c/log.solver" "c0 = 5 m/s"
+check "speedSystem 0.5, coefSound 10: no warning (c0 is 10 times it)" \
+    bash -c "! grep -q 'Warning' '$scratch/c/log.solver'"
+fresh; sed -i 's/^coefSound .*/c0 1; speedSystem 0.5;/' "$scratch/c/constant/fluidProperties"
+expectFatal "c0 below 3 speedSystem" "far too low" "0.5 m/s \\(speedSystem\\)"
+fresh; sed -i 's/^coefSound .*/coefSound 10; speedSystem -1;/' "$scratch/c/constant/fluidProperties"
+expectFatal "a negative speedSystem" "speedSystem" "must be > 0" "fluidProperties"
+
 # A time step below minDeltaT: diagnosis, last good state written.
 fresh; sed -i 's/^adjustTimeStep .*/adjustTimeStep yes; minDeltaT 1e-3;/' "$scratch/c/system/controlDict"
 expectFatal "a step below minDeltaT" "below minDeltaT" "particle id [0-9]+ of body water at \(" \

@@ -20,6 +20,9 @@ expectedCount()
         sluiceGate3D/water)      echo $((24*8*20)) ;;
         sluiceGate3D/gate)       echo $((6*16*56)) ;;                     # dp/2: 6 layers
         sluiceGate3D/flume)      echo $((74*14*35 - 68*8*32 + 3*14*16 + 2*24*3*16)) ;;  # + raised end
+        rollingTank3DCoarse/plate)    echo $((3*15*42)) ;;               # dp/3, 8 mm thick
+        rollingTank3DCoarse/oil)      echo $((38*5*14)) ;;
+        rollingTank3DCoarse/oilRight) echo $((37*5*14)) ;;
         # The fine dictionaries (system/generateParticlesDict.fine)
         rollingTank3D.fine/plate)    echo $((5*50*144)) ;;               # 0.8 mm
         rollingTank3D.fine/oil)      echo $((190*25*72)) ;;
