@@ -433,7 +433,8 @@ void fsiSolver::setSoundSpeed()
     fluidHeight_ = gMag > 0 ? hi - lo + model_.dp : 0;
 
     const std::string file = (caseDir_/"constant/fluidProperties").string();
-    const scalar speedSystem = model_.speedSystem > 0
+    const bool speedGiven = model_.speedSystem > 0;
+    const scalar speedSystem = speedGiven
       ? model_.speedSystem : std::sqrt(gMag*fluidHeight_);
     if (model_.coefSound > 0 && restartC0_ > 0)
     {
@@ -454,12 +455,12 @@ void fsiSolver::setSoundSpeed()
     // Weak compressibility needs c0 >= 10 U; the largest speed expected is
     // the case's speedSystem, else the free-fall speed over the fluid
     // height, or the initial speed if larger.
-    const scalar uExpected = std::max(model_.speedSystem > 0
+    const scalar uExpected = std::max(speedGiven
         ? model_.speedSystem : std::sqrt(2*gMag*fluidHeight_), std::sqrt(u2));
     const scalar c0Min = 10*uExpected;
     if (model_.c0 < 3*uExpected)
     {
-        const std::string reaches = model_.speedSystem > 0
+        const std::string reaches = speedGiven
           ? "the fluid reaches about " + str(uExpected) + " m/s (speedSystem)"
           : "the fluid (height " + str(fluidHeight_) + " m) reaches about "
             + str(uExpected) + " m/s";
