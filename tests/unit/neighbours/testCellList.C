@@ -5,6 +5,8 @@
 // clustered clouds, particles exactly on cell faces (dyadic and decimal
 // cell sizes), particles outside the grid and non-finite positions, cell
 // divisors 1, 2 and 3 (the GPU's default), serial and OpenMP builds (which must agree exactly),
+// the host's ranges (a walk per row of cells) against the GPU's (a search
+// per cell),
 // the kind ranges and the walks of one kind, the walks around a point
 // that reach only the cells within the support, and the errors of
 // makeCellGrid.
@@ -42,6 +44,23 @@ struct cloud
     int nDim;
     std::vector<point> x;
 };
+
+// The ranges of the GPU's pass (fillCellRanges: a search per cell) from
+// the list's sorted keys equal the host's (buildCellList: a walk per row).
+void expectGpuRangesEqual(const cellList& l)
+{
+    const cellGrid& g = l.grid;
+    const label n = label(l.keys.size());
+    std::vector<label> rowStart(g.nRows() + 1), cellStart(g.nCells() + 1);
+    std::vector<label> kindEnd(2*g.nCells());
+    std::vector<std::uint32_t> flags(g.nBlocks());
+    fillCellRanges(serialExec{}, g, l.keys.data(), n, rowStart.data(),
+                   cellStart.data(), kindEnd.data(), flags.data());
+    EXPECT_TRUE(rowStart == l.rowStart);
+    EXPECT_TRUE(cellStart == l.cellStart);
+    EXPECT_TRUE(kindEnd == l.kindEnd);
+    EXPECT_TRUE(flags == l.blockHasFluid);
+}
 
 // Calls visit(c) for every cell c of the stencil st: the reach cells each
 // way around a cell, which the block flags and the walks are measured
@@ -408,6 +427,7 @@ void checkCloud(const cloud& c)
         EXPECT_TRUE(serialList.keys == openmpList.keys);
         EXPECT_TRUE(serialList.order == openmpList.order);
         EXPECT_TRUE(serialList.cellStart == openmpList.cellStart);
+        expectGpuRangesEqual(openmpList);
     }
 }
 
@@ -581,6 +601,7 @@ TEST(cellList, kindRangesAndWalks)
                                             divisor, nDim);
             cellList l;
             buildCellList(openmpExec{}, g, c.x.data(), kind.data(), n, l);
+            expectGpuRangesEqual(l);
             std::vector<point> x(l.nInside);
             std::vector<std::uint8_t> k(l.nInside);
             for (label s = 0; s < l.nInside; ++s)
