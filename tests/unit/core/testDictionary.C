@@ -7,7 +7,7 @@
 
 #include "dictionary.H"
 #include "error.H"
-#include "testDictionaryTools.H"
+#include "../testTools.H"
 
 #include <gtest/gtest.h>
 

@@ -7,6 +7,7 @@
 
 #include "error.H"
 #include "../testPrecision.H"
+#include "../testTools.H"
 #include "timeSelection.H"
 #include "vtkCaseConverter.H"
 #include "vtpWriter.H"
@@ -19,12 +20,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 using namespace sphvcpm;
@@ -33,57 +32,10 @@ namespace fs = std::filesystem;
 namespace
 {
 
-FatalError catchFatal(const std::function<void()>& body)
-{
-    try
-    {
-        body();
-    }
-    catch (const FatalError& err)
-    {
-        return err;
-    }
-    ADD_FAILURE() << "expected a FatalError, none was thrown";
-    return FatalError("<none>");
-}
-
-void expectMessage(const FatalError& err,
-                   const std::vector<std::string>& parts)
-{
-    for (const auto& p : parts)
-    {
-        EXPECT_NE(err.message().find(p), std::string::npos)
-            << "missing \"" << p << "\" in:\n" << err.message();
-    }
-}
-
-class scratchDir
-{
-public:
-    scratchDir()
-    {
-        std::string tmpl = (fs::temp_directory_path()/"testVtp.XXXXXX")
-            .string();
-        path_ = ::mkdtemp(tmpl.data());
-    }
-    ~scratchDir()
-    {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
-
-std::string readFile(const fs::path& file)
-{
-    std::ifstream is(file, std::ios::binary);
-    std::ostringstream os;
-    os << is.rdbuf();
-    return os.str();
-}
+using test::catchFatal;
+using test::expectMessage;
+using test::scratchDir;
+using test::readText;
 
 // A .vtp read back by hand, trusting nothing but the format's rules.
 struct parsedArray
@@ -140,7 +92,7 @@ std::string attribute(const std::string& tag, const std::string& name)
 
 parsedVtp parseVtp(const fs::path& file)
 {
-    const std::string s = readFile(file);
+    const std::string s = readText(file);
     parsedVtp vtp;
     const std::string marker = "<AppendedData encoding=\"raw\">";
     const std::size_t appended = s.find(marker);
@@ -399,7 +351,7 @@ TEST(vtpSeries, json)
         {"water/water_300.vtp", 0.1 + 0.2},
         {"water/water_5.vtp", 1e-05},
         {"water/water_7.vtp", 12345.678901234567}});
-    EXPECT_EQ(readFile(file),
+    EXPECT_EQ(readText(file),
         "{\n"
         "  \"file-series-version\" : \"1.0\",\n"
         "  \"files\" : [\n"
@@ -414,7 +366,7 @@ TEST(vtpSeries, json)
         "}\n");
 
     writeVtpSeries(file, {});
-    EXPECT_EQ(readFile(file),
+    EXPECT_EQ(readText(file),
         "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n  ]\n}\n");
 
     const FatalError err = catchFatal([&]()
@@ -591,7 +543,7 @@ TEST(vtkCaseConverter, convertsAndKeepsSeries)
         EXPECT_EQ(out[1].file.generic_string(), "VTK/water/water_0.vtp");
         conv.writeSeries();
     }
-    EXPECT_EQ(readFile(caseDir/"VTK"/"water.vtp.series"),
+    EXPECT_EQ(readText(caseDir/"VTK"/"water.vtp.series"),
         "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n"
         "    { \"name\" : \"water/water_0.vtp\", \"time\" : 0 }\n  ]\n}\n");
 
@@ -602,7 +554,7 @@ TEST(vtkCaseConverter, convertsAndKeepsSeries)
         EXPECT_EQ(out[1].file.generic_string(), "VTK/water/water_25.vtp");
         conv.writeSeries();
     }
-    EXPECT_EQ(readFile(caseDir/"VTK"/"water.vtp.series"),
+    EXPECT_EQ(readText(caseDir/"VTK"/"water.vtp.series"),
         "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n"
         "    { \"name\" : \"water/water_0.vtp\", \"time\" : 0 },\n"
         "    { \"name\" : \"water/water_25.vtp\", \"time\" : 0.25 }\n"

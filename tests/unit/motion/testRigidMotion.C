@@ -9,8 +9,9 @@
 // constant/motion with the rolling tank's roll record, and every bad input
 // as a FatalError.
 
+#include "dictionary.H"
 #include "motionSet.H"
-#include "testDictionaryTools.H"
+#include "../testTools.H"
 
 #include "../testPrecision.H"
 

@@ -8,7 +8,8 @@
 // ramp against finite differences, and every bad input as a FatalError
 // naming file, line and keyword.
 
-#include "testDictionaryTools.H"
+#include "dictionary.H"
+#include "../testTools.H"
 #include "timeFunction.H"
 
 #include "../testPrecision.H"

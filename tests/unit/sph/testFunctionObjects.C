@@ -8,19 +8,17 @@
 
 #include "functionObject.H"
 #include "../testPrecision.H"
+#include "../testTools.H"
 #include "functionObjects.H"
 #include "error.H"
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 using namespace sphvcpm;
@@ -32,61 +30,9 @@ namespace
 
 // * * * * * * * * * * * * * * * * * Helpers  * * * * * * * * * * * * * * * //
 
-FatalError catchFatal(const std::function<void()>& body)
-{
-    try
-    {
-        body();
-    }
-    catch (const FatalError& err)
-    {
-        return err;
-    }
-    ADD_FAILURE() << "expected a FatalError, none was thrown";
-    return FatalError("<none>");
-}
-
-void expectMessage(const FatalError& err,
-                   const std::vector<std::string>& parts)
-{
-    for (const auto& p : parts)
-    {
-        EXPECT_NE(err.message().find(p), std::string::npos)
-            << "missing \"" << p << "\" in:\n" << err.report();
-    }
-}
-
-// A fresh directory under /tmp, removed with the object.
-class scratchDir
-{
-public:
-    scratchDir()
-    :
-        path_
-        (
-            fs::temp_directory_path()
-          / ("sphvcpm-functionObjects-" + std::to_string(::getpid()) + "-"
-           + std::to_string(counter()++))
-        )
-    {
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~scratchDir()
-    {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-    static std::atomic<int>& counter()
-    {
-        static std::atomic<int> n{0};
-        return n;
-    }
-};
+using test::catchFatal;
+using test::expectMessage;
+using test::scratchDir;
 
 std::vector<std::string> readLines(const fs::path& file)
 {
