@@ -9,6 +9,7 @@
 #include "deviceBuffer.H"
 #include "error.H"
 #include "parallel.H"
+#include "testRandomData.H"
 #include "../testPrecision.H"
 
 #include <gtest/gtest.h>
@@ -33,31 +34,8 @@ namespace
 const std::vector<label> sizes =
     {0, 1, 2, 3, 7, 255, 4095, 4096, 4097, 33333, 65537, 1000000, 1000003};
 
-std::vector<scalar> randomScalars(const label n, const unsigned seed)
-{
-    std::mt19937_64 gen(seed);
-    std::uniform_real_distribution<scalar> dist(-1.0, 1.0);
-    std::vector<scalar> v(n);
-    for (scalar& x : v)
-    {
-        x = dist(gen);
-    }
-    return v;
-}
-
-template<class T>
-std::vector<T> randomIntegers(const label n, const T lo, const T hi,
-                              const unsigned seed)
-{
-    std::mt19937_64 gen(seed);
-    std::uniform_int_distribution<long long> dist(lo, hi);
-    std::vector<T> v(n);
-    for (T& x : v)
-    {
-        x = T(dist(gen));
-    }
-    return v;
-}
+using test::randomIntegers;
+using test::randomScalars;
 
 // Sets the OpenMP thread count for a scope.
 class threadCount

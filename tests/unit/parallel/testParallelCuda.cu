@@ -14,6 +14,7 @@
 #include "deviceBuffer.H"
 #include "error.H"
 #include "parallel.H"
+#include "testRandomData.H"
 #include "parallelCuda.cuh"
 
 #include <algorithm>
@@ -180,31 +181,8 @@ namespace
 const std::vector<label> sizes =
     {0, 1, 2, 3, 7, 255, 256, 257, 4097, 65537, 262145, 1000000, 1000003};
 
-std::vector<scalar> randomScalars(const label n, const unsigned seed)
-{
-    std::mt19937_64 gen(seed);
-    std::uniform_real_distribution<scalar> dist(-1.0, 1.0);
-    std::vector<scalar> v(n);
-    for (scalar& x : v)
-    {
-        x = dist(gen);
-    }
-    return v;
-}
-
-template<class T>
-std::vector<T> randomIntegers(const label n, const T lo, const T hi,
-                              const unsigned seed)
-{
-    std::mt19937_64 gen(seed);
-    std::uniform_int_distribution<long long> dist(lo, hi);
-    std::vector<T> v(n);
-    for (T& x : v)
-    {
-        x = T(dist(gen));
-    }
-    return v;
-}
+using test::randomIntegers;
+using test::randomScalars;
 
 // First index where a and b differ, -1 when equal.
 template<class T>
