@@ -139,23 +139,31 @@ static void radixSort(std::uint32_t* keys, label* values, const label n,
     const label chunk = (n - 1)/nChunks + 1;
     std::vector<label> count(std::size_t(nChunks)*256);
 
-    for (int shift = 0; shift < 32; shift += 8)
+    // body(counts of chunk c, begin, end) for every chunk, side by side.
+    const auto forEachChunk = [&](const auto& body)
     {
-        std::fill(count.begin(), count.end(), 0);
-
 #ifdef _OPENMP
         #pragma omp parallel for schedule(static) if (nChunks > 1)
 #endif
         for (int c = 0; c < nChunks; ++c)
         {
-            label* cc = count.data() + std::size_t(c)*256;
             const label begin = std::min(n, c*chunk);
-            const label end = std::min(n, begin + chunk);
+            body(count.data() + std::size_t(c)*256, begin,
+                 std::min(n, begin + chunk));
+        }
+    };
+
+    for (int shift = 0; shift < 32; shift += 8)
+    {
+        std::fill(count.begin(), count.end(), 0);
+
+        forEachChunk([&](label* cc, const label begin, const label end)
+        {
             for (label i = begin; i < end; ++i)
             {
                 ++cc[(srcK[i] >> shift) & 0xff];
             }
-        }
+        });
 
         // Turn the counts into start offsets; a byte shared by all keys
         // leaves the order as it is, so the pass is skipped.
@@ -179,21 +187,15 @@ static void radixSort(std::uint32_t* keys, label* values, const label n,
             continue;
         }
 
-#ifdef _OPENMP
-        #pragma omp parallel for schedule(static) if (nChunks > 1)
-#endif
-        for (int c = 0; c < nChunks; ++c)
+        forEachChunk([&](label* cc, const label begin, const label end)
         {
-            label* cc = count.data() + std::size_t(c)*256;
-            const label begin = std::min(n, c*chunk);
-            const label end = std::min(n, begin + chunk);
             for (label i = begin; i < end; ++i)
             {
                 const label pos = cc[(srcK[i] >> shift) & 0xff]++;
                 dstK[pos] = srcK[i];
                 dstV[pos] = srcV[i];
             }
-        }
+        });
         std::swap(srcK, dstK);
         std::swap(srcV, dstV);
     }
