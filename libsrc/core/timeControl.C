@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace sphvcpm
 {
@@ -64,6 +65,17 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
     {
         d.fatalAt("writeInterval", "writeControl timeStep needs a whole"
             " number of steps as writeInterval");
+    }
+    if (tc.writeControl != writeControlType::timeStep
+     && tc.writeInterval < tc.minDeltaT)
+    {
+        // Each write time is landed on, so every step would be shorter
+        // than the floor the run is stopped at.
+        std::ostringstream os;
+        os  << "writeInterval " << tc.writeInterval << " s is below minDeltaT "
+            << tc.minDeltaT << " s (the smallest time step allowed; by"
+            " default deltaT*1e-6)";
+        d.fatalAt("writeInterval", os.str());
     }
     tc.purgeWrite = d.getOrDefault<label>("purgeWrite", 0);
     if (tc.purgeWrite < 0)

@@ -8,6 +8,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
@@ -260,6 +261,12 @@ void tokeniser::readNumber(token& t)
     if (end != s + buf.size())
     {
         error(t.line, "Bad number '" + buf + "'");
+    }
+    if (errno == ERANGE && std::isinf(v))
+    {
+        // strtod gives infinity: no input means that.
+        error(t.line, "Number '" + buf + "' is too large (beyond the"
+            " largest double, about 1.8e308)");
     }
     t.type = token::kind::floating;
     t.floatValue = v;

@@ -135,6 +135,15 @@ fresh; sed -i 's/^adjustTimeStep .*/adjustTimeStep yes; minDeltaT 1e-3;/' "$scra
 expectFatal "a step below minDeltaT" "below minDeltaT" "particle id [0-9]+ of body water at \(" \
     "last good state is the start time, 0/"
 
+# A write interval below minDeltaT would make every step land below the
+# floor: an input error naming writeInterval, before any step.
+fresh; sed -i 's/^writeInterval .*/writeInterval 1e-300;/' "$scratch/c/system/controlDict"
+expectFatal "writeInterval below minDeltaT" "system/controlDict" \
+    "writeInterval 1e-300 s is below minDeltaT 1e-10 s"
+# A number beyond double's range is an error, not infinity.
+fresh; sed -i 's/^endTime .*/endTime 1e999;/' "$scratch/c/system/controlDict"
+expectFatal "endTime 1e999" "system/controlDict" "Number '1e999' is too large"
+
 # A fixed step far too large: the run blows up, says where, and writes the
 # last good state (the time directory named in the message exists).
 fresh; sed -i 's/^adjustTimeStep .*/adjustTimeStep no;/; s/^deltaT .*/deltaT 0.004;/' \

@@ -71,6 +71,8 @@ const std::vector<syntaxCase> syntaxCases =
       "expected ')' to close '(' opened at line 1"}},
     {"badNumber", "a 1;\nb 1.2.3;\n", 2, {"Bad number '1.2.3'"}},
     {"badExponent", "a 1e;\n", 1, {"Bad number '1e'"}},
+    {"numberOverflows", "a 1;\nb -1e999;\n", 2,
+     {"Number '-1e999' is too large", "1.8e308"}},
     {"singleQuote", "a 'x';\n", 1,
      {"Unexpected single quote", "double quotes"}},
     {"unbalancedWord", "div(phi,U Gauss linear;\n", 1,
