@@ -152,6 +152,10 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         log_<< "    solid-wall contact: hard, at a gap of dp_s/2 to the nearest"
             << " wall particle's surface\n";
     }
+    if (coupling_)
+    {
+        reportSubCycling();
+    }
     log_
         << "    g = " << str(model_.g) << "\n"
         << "    domain " << str(grid_.origin) << " "
@@ -591,6 +595,35 @@ void fsiSolver::setDomain(const bool onGpu)
 hostParticleStore fsiSolver::hostStore()
 {
     return {particles_, cells_, nearFluid_, viscTerm_};
+}
+
+
+void fsiSolver::reportSubCycling()
+{
+    // The fluid's acoustic step at rest, the usual step of a run: how many
+    // solid steps each one holds. Thousands make a run crawl, most often
+    // from a wrong E or rho (a unit slip), so say so before it starts.
+    const double fluidDt = control_.adjustTimeStep
+      ? std::min(double(control_.maxCo*model_.h/model_.c0),
+                 control_.maxDeltaT)
+      : control_.deltaT;
+    constexpr double manySubSteps = 1000;
+    for (const solidBody& b : solids_->bodies())
+    {
+        const double n = std::ceil(fluidDt/b.stableDeltaT);
+        log_<< "    solid " << b.name << ": about " << n
+            << " sub-steps of " << b.stableDeltaT << " s per fluid step of "
+            << fluidDt << " s\n";
+        if (n > manySubSteps)
+        {
+            warning("Solid '" + b.name + "' needs about " + str(n)
+                + " sub-steps in each fluid step (its stable step "
+                + str(b.stableDeltaT) + " s against the fluid's "
+                + str(fluidDt) + " s): the run will be slow. Check its E"
+                " and rho in constant/solidProperties",
+                (caseDir_/"constant/solidProperties").string());
+        }
+    }
 }
 
 

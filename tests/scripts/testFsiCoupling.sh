@@ -6,7 +6,8 @@
 # reaction of the fluid's forces over each step. The solid must also have
 # been pushed (it takes momentum from the fluid), no fluid particle may
 # end inside the solid, and the log reports the sub-steps. A third run
-# does the same in 3D (simple cubic lattice, r = 1). Last, -timers.
+# does the same in 3D (simple cubic lattice, r = 1). Then a block far too
+# stiff (a warning), last -timers.
 source "$(dirname "$0")/testLib.sh"
 source "$(dirname "$0")/fieldTools.sh"
 
@@ -65,6 +66,10 @@ for run in r1 r2 3D; do
     log="$scratch/log.run$run"
     expectIn "$run: log names the solid" "$log" "block \(solid\)"
     expectIn "$run: log reports the solid steps" "$log" "solid steps per fluid step"
+    expectIn "$run: log gives the sub-steps a fluid step holds" "$log" \
+        "solid block: about [0-9]+ sub-steps of .* s per fluid step of"
+    check "$run: no warning of slow sub-cycling" \
+        bash -c "! grep -q 'sub-steps in each fluid step' '$log'"
     expectIn "$run: End" "$log" "^End"
     check "$run: forces on the block written" \
         [ -s "$c/postProcessing/blockForce/0/force.dat" ]
@@ -109,6 +114,20 @@ print(len(inside), "water particles inside the block")
 sys.exit(1 if inside else 0)
 PY
 done
+
+# A block 1e10 times too stiff (E in the wrong unit): the solver says so
+# before the run crawls.
+c="$scratch/fsiStiff"
+makeCase "$c" 0.01 2
+sed -i 's/E 2e6;/E 2e16;/' "$c/constant/solidProperties"
+sed -i 's/^endTime .*/endTime 1e-5;/' "$c/system/controlDict"
+generateParticles -case "$c" > "$scratch/log.genStiff" 2>&1
+sphVcpmFsi -case "$c" > "$scratch/log.runStiff" 2>&1
+check "E 2e16: the short run ends" [ $? -eq 0 ]
+expectIn "E 2e16: warns of the sub-steps, naming the solid" "$scratch/log.runStiff" \
+    "Solid 'block' needs about [0-9.e+]+ sub-steps in each fluid step"
+expectIn "E 2e16: the warning points to solidProperties" "$scratch/log.runStiff" \
+    "file: .*constant/solidProperties"
 
 # -timers: the run summary has the time of each phase of the step, which
 # add up to no more than the time loop's wall clock and to most of it; the
