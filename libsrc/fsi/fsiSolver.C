@@ -619,8 +619,8 @@ void fsiSolver::reportSubCycling()
             warning("Solid '" + b.name + "' needs about " + str(n)
                 + " sub-steps in each fluid step (its stable step "
                 + str(b.stableDeltaT) + " s against the fluid's "
-                + str(fluidDt) + " s): the run will be slow. Check its E"
-                " and rho in constant/solidProperties",
+                + str(fluidDt) + " s): the run will be slow. Check its E,"
+                " nu and rho in constant/solidProperties",
                 (caseDir_/"constant/solidProperties").string());
         }
     }

@@ -127,8 +127,7 @@ solidBodySet::solidBodySet
         }
 
         solidBody sb{b.name(), b.dp(), b.id(),
-                     std::make_unique<vcpmSolid>(mat, reference),
-                     mat.stableTimeStep(damping > 0 ? 0.3 : 0.5)};
+                     std::make_unique<vcpmSolid>(mat, reference), 0};
         vcpmSolid& s = *sb.solid;
         s.position = b.position();
         if (b.hasField("U")) s.velocity = b.vectorField("U");
@@ -144,6 +143,8 @@ solidBodySet::solidBodySet
         s.gravity = g;
         s.damping = damping;
         s.latticeDamping = latticeDamping;
+        // With the lattice damping known: lower near nu = 0.5.
+        sb.stableDeltaT = s.stableTimeStep(damping > 0 ? 0.3 : 0.5);
 
         log << "    " << b.name() << " (solid): " << n << " particles, "
             << nClamped << " clamped, " << s.bonds().nBonds() << " bonds\n"

@@ -192,6 +192,49 @@ TEST(vcpmMaterial, stableStepAndMass)
     EXPECT_SCALAR_EQ(p.mass, 1100*1e-4*0.1);
 }
 
+// Near nu = 0.5 the lattice damping governs the stable step: a perturbed
+// plane-strain block at nu = 0.49999 with the default damping stays
+// bounded at vcpmSolid::stableTimeStep and blows up at the undamped
+// C_s l0/c_p (the step the solver took before, which stopped the run in
+// its first steps). Far from 0.5 the two steps are one.
+TEST(vcpmSolid, stableStepWithLatticeDampingNearIncompressible)
+{
+    SPHVCPM_DOUBLE_ONLY();
+    const auto maxSpeed = [](const scalar nu, const bool dampedStep)
+    {
+        const vcpmMaterial m = material(sq, pStrain, nu);
+        vcpmSolid s = makeSolid(m, 8, 8, 1);
+        s.latticeDamping = 0.02;
+        perturb(s.position, 1e-4*m.l0, 2, 3);
+        const scalar dt =
+            dampedStep ? s.stableTimeStep() : m.stableTimeStep();
+        s.computeForces(openmpExec{});
+        scalar most = 0;
+        for (int n = 0; n < 2000; ++n)
+        {
+            s.step(openmpExec{}, dt);
+            for (const vec3& u : s.velocity)
+            {
+                most = std::isfinite(mag(u)) ? std::max(most, mag(u))
+                                             : vGreat;
+            }
+        }
+        return most;
+    };
+    const vcpmMaterial nearHalf = material(sq, pStrain, 0.49999);
+    const scalar cp = nearHalf.pWaveSpeed;
+    // Bounded: below the speed a strain of the perturbation gives, c_p e.
+    EXPECT_LT(maxSpeed(0.49999, true), 1e-4*cp);
+    EXPECT_GT(maxSpeed(0.49999, false), 1e3*cp);
+    for (const scalar nu : {0.0, 0.3, 0.49})
+    {
+        const vcpmMaterial m = material(sq, pStrain, nu);
+        vcpmSolid s = makeSolid(m, 4, 4, 1);
+        s.latticeDamping = 0.02;
+        EXPECT_EQ(s.stableTimeStep(), m.stableTimeStep()) << nu;
+    }
+}
+
 TEST(vcpmMaterial, badInputNamesTheKeyword)
 {
     auto keywordOf = [](auto make) -> std::string
