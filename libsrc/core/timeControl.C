@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace sphvcpm
@@ -119,8 +120,23 @@ writeSchedule::writeSchedule(const timeControl& control,
 :
     control_(control),
     next_((std::floor(startTime/control.writeInterval + 1e-9) + 1)
-          *control.writeInterval)
+          *control.writeInterval),
+    precision_(control.timePrecision),
+    lastName_(timeName(startTime, control.format, control.timePrecision)),
+    lastTime_(startTime)
 {}
+
+
+namespace
+{
+
+// t has reached target, to round-off (either sign).
+bool reached(const double t, const double target)
+{
+    return t >= target - 1e-12*std::abs(target);
+}
+
+} // End anonymous namespace
 
 
 double writeSchedule::limitStep(const double time, double dt)
@@ -159,9 +175,9 @@ bool writeSchedule::due(const double time, const label timeIndex) const
         case writeControlType::timeStep:
             return timeIndex % label(control_.writeInterval) == 0;
         case writeControlType::runTime:
-            return time >= next_*(1 - 1e-12);
+            return reached(time, next_);
         default:
-            return landed_ && time >= next_*(1 - 1e-12);
+            return landed_ && reached(time, next_);
     }
 }
 
@@ -170,10 +186,12 @@ void writeSchedule::written(const double time, const std::string& name,
                             const std::filesystem::path& caseDir,
                             const std::string& startTimeName)
 {
-    while (next_ <= time*(1 + 1e-12))
+    while (reached(time, next_))
     {
         next_ += control_.writeInterval;
     }
+    lastName_ = name;
+    lastTime_ = time;
     if (control_.purgeWrite > 0 && name != startTimeName)
     {
         if (writtenNames_.empty() || writtenNames_.back() != name)
@@ -186,6 +204,50 @@ void writeSchedule::written(const double time, const std::string& name,
             writtenNames_.erase(writtenNames_.begin());
         }
     }
+}
+
+
+
+std::string writeSchedule::name(const double t) const
+{
+    return timeName(t, control_.format, precision_);
+}
+
+
+std::string writeSchedule::writeName(const double t)
+{
+    // Names that read as the same number ("0.0" and "0.00") repeat too.
+    const auto same = [](const std::string& a, const std::string& b)
+    {
+        double x = 0, y = 0;
+        return a == b
+            || (parseTimeName(a, x) && parseTimeName(b, y) && x == y);
+    };
+    // Nor may it read as nearer the previous write than t ("0.0001" for
+    // 5e-05 after 0, in fixed format), or the next write would repeat it.
+    const auto unclear = [&](const std::string& n)
+    {
+        double x = 0;
+        return same(n, lastName_) || !parseTimeName(n, x)
+            || !(std::abs(x - t) < 0.5*std::abs(t - lastTime_));
+    };
+    const int before = precision_;
+    std::string n = name(t);
+    while (unclear(n) && precision_ < 17)
+    {
+        ++precision_;
+        n = name(t);
+    }
+    if (precision_ != before)
+    {
+        std::ostringstream os;
+        os  << "Increased the timePrecision from " << before << " to "
+            << precision_ << " to distinguish the time names of "
+            << std::setprecision(17) << t << " and the write before it ("
+            << lastName_ << ")";
+        warning(os.str());
+    }
+    return n;
 }
 
 } // End namespace sphvcpm

@@ -747,7 +747,7 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
     {
         write();
         msg << "The last good state (time " << str(time_, 10)
-            << ") was written to " << control_.name(time_) << "/.\n";
+            << ") was written to " << schedule_->name(time_) << "/.\n";
     }
     msg << "Usual causes: a time step too large for the forces (lower maxCo"
            " or maxDeltaT), a speed of sound too low for the impact"
@@ -849,7 +849,7 @@ void fsiSolver::write(const bool inBackground)
     }
     for (particleBody& body : out) body.setNextId(maxId + 1);
 
-    const timeState state{time_, control_.name(time_), timeIndex_, deltaT_,
+    const timeState state{time_, schedule_->writeName(time_), timeIndex_, deltaT_,
                           deltaT0_, beginTime_, {{"c0", model_.c0}}};
     const writeFormat format = writeFormatFromName(control_.writeFormatName);
     const int precision = control_.writePrecision;
@@ -931,7 +931,7 @@ void fsiSolver::run()
             // goes on beside them.
             if (gpu_) gpuToHost();
             write(bool(gpu_));
-            schedule_->written(time_, control_.name(time_), caseDir_,
+            schedule_->written(time_, schedule_->name(time_), caseDir_,
                                startTimeName_);
         }
         if (stepsRun_ % control_.logInterval == 0 || atEnd)
@@ -940,7 +940,7 @@ void fsiSolver::run()
             outputSeconds += std::chrono::duration<double>(
                 std::chrono::steady_clock::now() - outputStart).count();
             ++nInteractionSamples_;
-            log_<< "Time = " << control_.name(time_) << "\n"
+            log_<< "Time = " << schedule_->name(time_) << "\n"
                 << "Step = " << timeIndex_ << "  deltaT = "
                 << str(deltaT_, 4) << "  particles = " << particles_.size()
                 << "\n" << executionTimeLine() << "\n" << std::endl;

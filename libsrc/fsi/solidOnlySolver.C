@@ -96,7 +96,7 @@ void solidOnlySolver::write()
     std::vector<particleBody> out = solids_->output(nDim_, maxId);
     for (particleBody& o : out) o.setNextId(maxId + 1);
 
-    const timeState state{time_, control_.name(time_), timeIndex_, deltaT_,
+    const timeState state{time_, schedule_->writeName(time_), timeIndex_, deltaT_,
                           deltaT_, beginTime_, {}};
     writeTimeDirectory(caseDir_, state, out,
         writeFormatFromName(control_.writeFormatName),
@@ -157,7 +157,7 @@ void solidOnlySolver::run()
         if (schedule_->due(time_, timeIndex_) || atEnd)
         {
             write();
-            schedule_->written(time_, control_.name(time_), caseDir_,
+            schedule_->written(time_, schedule_->name(time_), caseDir_,
                                startTimeName_);
         }
         if (stepsRun % control_.logInterval == 0 || atEnd)
@@ -167,7 +167,7 @@ void solidOnlySolver::run()
             {
                 kinetic += b.solid->kineticEnergy();
             }
-            log_<< "Time = " << control_.name(time_) << "\n"
+            log_<< "Time = " << schedule_->name(time_) << "\n"
                 << "Step = " << timeIndex_ << "  deltaT = "
                 << std::setprecision(4) << deltaT_ << std::setprecision(6)
                 << "  kinetic energy = " << kinetic << " J\n"

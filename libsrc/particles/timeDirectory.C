@@ -22,7 +22,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <iomanip>
 #include <set>
+#include <sstream>
 #include <unistd.h>
 
 namespace sphvcpm
@@ -420,6 +422,31 @@ timeState readTimeState(const fs::path& caseDir, const std::string& timeName)
         }
     };
     check("value", state.value, false);
+    // The name is the value printed in some format and precision; any
+    // other value is a copied or edited directory, whose state would be
+    // restarted at the wrong time.
+    double named = 0;
+    if (parseTimeName(timeName, named))
+    {
+        bool matches = false;
+        for (const timeFormat f :
+             {timeFormat::general, timeFormat::fixed, timeFormat::scientific})
+        {
+            for (int p = 1; p <= 17 && !matches; ++p)
+            {
+                matches = sphvcpm::timeName(state.value, f, p) == timeName;
+            }
+        }
+        if (!matches)
+        {
+            std::ostringstream os;
+            os  << std::setprecision(17) << "Keyword 'value': the time "
+                << state.value << " is not the time of its directory '"
+                << timeName << "' (copied or edited?): rename the directory"
+                   " or correct the value";
+            dict.fatalAt("value", os.str());
+        }
+    }
     check("beginTime", state.beginTime, false);
     check("deltaT", state.deltaT, true);
     check("deltaT0", state.deltaT0, true);

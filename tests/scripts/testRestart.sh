@@ -117,4 +117,26 @@ done
 u=$(fieldValues "$scratch/fsiWhole/0.32/plate/displacement" | awk '{ m2 = $1*$1 + $2*$2; if (m2 > m) m = m2 } END { print sqrt(m) }')
 check "fsi: the plate moved ($u m)" awk -v u="$u" 'BEGIN { exit !(u > 1e-4) }'
 
+# Time names that would repeat: timeFormat fixed with 1 digit names 5e-05
+# and 1e-04 both "0.0"; the solver raises the precision, says so, and
+# writes two directories, each holding its own time.
+c="$scratch/names"
+cp -r "$source" "$c"
+sed -i 's/^writeInterval .*/writeInterval   5e-5;\ntimeFormat fixed; timePrecision 1;/' "$c/system/controlDict"
+setEnd "$c" 1e-4
+(cd "$c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.sphVcpmFsi 2>&1)
+check "names: the run ends" grep -q '^End' "$c/log.sphVcpmFsi"
+expectIn "names: the precision raised, with a warning" "$c/log.sphVcpmFsi" \
+    "Increased the timePrecision from 1 to 5"
+check "names: 0.00005 and 0.00010 written" [ -d "$c/0.00005/water" -a -d "$c/0.00010/water" ]
+check "names: 0.00005 holds its own time" grep -q '^value *5e-05;' "$c/0.00005/uniform/time"
+# A time directory copied under another name (its uniform/time says
+# another time) is refused, naming the file, not restarted at the wrong time.
+cp -r "$c/0.00005" "$c/0.0002"
+(cd "$c" && sphVcpmFsi > log.copied 2>&1)
+check "copied time: exit status 1" [ $? -eq 1 ]
+expectIn "copied time: says what is wrong" "$c/log.copied" \
+    "the time 5.0000000000000002e-05 is not the time of its directory '0.0002'"
+expectIn "copied time: names the file" "$c/log.copied" "0.0002/uniform/time at line"
+
 finish
