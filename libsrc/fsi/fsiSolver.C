@@ -244,6 +244,7 @@ void fsiSolver::readStartTime()
     log_<< "Reading time " << startTimeName_ << "\n";
     std::vector<particleBody> bodies =
         readTimeDirectory(caseDir_, startTimeName_);
+    checkStartState(bodies, state);
 
     int nDim = 0;
     scalar dp = 0;
@@ -394,6 +395,76 @@ void fsiSolver::readStartTime()
     log_<< "    dp = " << dp << " m, " << nDim << "D, time = " << time_
         << "\n" << std::endl;
     placeMovingWalls();
+}
+
+
+void fsiSolver::checkStartState(const std::vector<particleBody>& bodies,
+                                const timeState& state) const
+{
+    const std::string dir = (caseDir_/startTimeName_).string();
+    for (const particleBody& b : bodies)
+    {
+        if (b.size() == 0)
+        {
+            fatalError("Body " + b.name() + " of " + dir + " has no"
+                " particles (its fields hold none): generateParticles and"
+                " the solver never write an empty body, so the directory is"
+                " damaged");
+        }
+    }
+    if (state.index == 0)
+    {
+        double named = 0;
+        if (parseTimeName(startTimeName_, named) && named != 0
+         && !std::filesystem::exists(caseDir_/startTimeName_/"uniform/time"))
+        {
+            warning("Time " + startTimeName_ + " has no uniform/time: it"
+                " starts as a fresh start (hydrostatic density; a solid's"
+                " reference lattice is its positions there). Every write of"
+                " the solver has it: if this is one, it was damaged", dir);
+        }
+        return;
+    }
+
+    // A restart continues the state the solver wrote: every body of the
+    // initial time, with the fields that carry the state across steps.
+    // One missing would silently start again from a default.
+    for (const std::string& name : bodyNames(caseDir_, "0"))
+    {
+        const bool found = std::any_of(bodies.begin(), bodies.end(),
+            [&](const particleBody& b) { return b.name() == name; });
+        if (!found)
+        {
+            fatalError("Body " + name + " of 0/ is missing from the restart"
+                " time " + dir + ": every write of the solver holds every"
+                " body, so the directory is damaged");
+        }
+    }
+    for (const particleBody& b : bodies)
+    {
+        std::vector<std::string> needed{"U"};
+        if (b.type() == bodyType::solid)
+        {
+            needed.push_back("Umean");
+            if (std::filesystem::exists(caseDir_/"0"/b.name()/"clamped"))
+            {
+                needed.push_back("clamped");
+            }
+        }
+        else
+        {
+            needed.insert(needed.end(), {"rho", "mass"});
+        }
+        for (const std::string& field : needed)
+        {
+            if (!b.hasField(field))
+            {
+                fatalError("Field " + dir + "/" + b.name() + "/" + field
+                    + " is missing: a restart needs it (the solver writes"
+                    " it every time), so the directory is damaged");
+            }
+        }
+    }
 }
 
 

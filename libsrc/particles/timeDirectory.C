@@ -344,8 +344,8 @@ void writeTimeDirectory(const fs::path& caseDir, const timeState& state,
 
 // * * * * * * * * * * * * * * * * * Reading * * * * * * * * * * * * * * * //
 
-std::vector<particleBody> readTimeDirectory(const fs::path& caseDir,
-                                            const std::string& timeName)
+std::vector<std::string> bodyNames(const fs::path& caseDir,
+                                   const std::string& timeName)
 {
     const fs::path dir = caseDir/timeName;
     std::error_code ec;
@@ -364,7 +364,15 @@ std::vector<particleBody> readTimeDirectory(const fs::path& caseDir,
         }
     }
     std::sort(names.begin(), names.end());
+    return names;
+}
 
+
+std::vector<particleBody> readTimeDirectory(const fs::path& caseDir,
+                                            const std::string& timeName)
+{
+    const fs::path dir = caseDir/timeName;
+    const std::vector<std::string> names = bodyNames(caseDir, timeName);
     std::vector<particleBody> bodies;
     bodies.reserve(names.size());
     for (const auto& name : names)

@@ -224,7 +224,7 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
         else if (type == "surgeFront")
         {
             all.push_back(std::make_unique<surgeFront>
-                (name, dict, caseDir, startTimeName));
+                (name, dict, caseDir, startTimeName, model.nDimensions));
         }
         else if (type == "solidPoints")
         {

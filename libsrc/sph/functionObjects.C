@@ -44,6 +44,13 @@ std::string str(const vec3& v)
     return os.str();
 }
 
+std::string str(const scalar v)
+{
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+
 // Points of a 2D case must lie in its plane (z = 0): off it they would
 // silently see no particle.
 std::vector<vec3> readPoints(const dictionary& dict, const std::string& key,
@@ -500,7 +507,8 @@ void energy::writeHeader(std::ostream& os) const
 
 surgeFront::surgeFront(std::string name, const dictionary& dict,
                        const std::filesystem::path& caseDir,
-                       const std::string& startTimeName)
+                       const std::string& startTimeName,
+                       const int nDimensions)
 :
     table(std::move(name), dict, caseDir, startTimeName, "front.dat"),
     origin_(dict.getOrDefault<vec3>("origin", vec3{0, 0, 0}))
@@ -512,6 +520,12 @@ surgeFront::surgeFront(std::string name, const dictionary& dict,
     {
         dict.fatalAt("direction", "Function object '" + this->name()
             + "': direction must be a non-zero vector, found " + str(d));
+    }
+    if (nDimensions == 2 && d.z != 0)
+    {
+        dict.fatalAt("direction", "Function object '" + this->name()
+            + "': in a 2D case the direction lies in the x-y plane (z = 0),"
+            " found " + str(d));
     }
     direction_ = (1/magD)*d;
 }
@@ -548,7 +562,8 @@ solidPoints::solidPoints(std::string name, const dictionary& dict,
                          const std::vector<bodyInfo>& bodies)
 :
     table(std::move(name), dict, caseDir, startTimeName, "displacement.dat"),
-    nDimensions_(model.nDimensions)
+    nDimensions_(model.nDimensions),
+    dp_(model.dp)
 {
     dict.checkKeywords(keywords({"body", "points"}));
     body_ = dict.get<std::string>("body");
@@ -587,6 +602,11 @@ std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
     }
     const std::vector<point>& X = *view->reference;
     const std::vector<point>& x = *view->position;
+    if (X.empty())
+    {
+        fatalError("Function object '" + name() + "': solid '" + body_
+            + "' has no particles");
+    }
     if (particles_.empty())
     {
         for (const vec3& p : points_)
@@ -598,6 +618,14 @@ std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
             }
             particles_.push_back(best);
             chosen_.push_back(toVec3(X[best]));
+            const scalar d = mag(chosen_.back() - p);
+            if (d > 2*dp_)
+            {
+                warning("Function object '" + name() + "': the point "
+                    + str(p) + " is " + str(d) + " m from solid '" + body_
+                    + "' (its nearest particle, at " + str(chosen_.back())
+                    + ", is followed instead): check the points");
+            }
         }
     }
     std::vector<scalar> row;

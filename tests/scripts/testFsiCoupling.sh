@@ -121,6 +121,9 @@ c="$scratch/fsiStiff"
 makeCase "$c" 0.01 2
 sed -i 's/E 2e6;/E 2e16;/' "$c/constant/solidProperties"
 sed -i 's/^endTime .*/endTime 1e-5;/' "$c/system/controlDict"
+# and a displacement point a metre off the block: followed, with a warning.
+sed -i 's/functions {/functions { far { type solidPoints; body block; points ((1 1 0)); }/' \
+    "$c/system/controlDict"
 generateParticles -case "$c" > "$scratch/log.genStiff" 2>&1
 sphVcpmFsi -case "$c" > "$scratch/log.runStiff" 2>&1
 check "E 2e16: the short run ends" [ $? -eq 0 ]
@@ -128,6 +131,8 @@ expectIn "E 2e16: warns of the sub-steps, naming the solid" "$scratch/log.runSti
     "Solid 'block' needs about [0-9.e+]+ sub-steps in each fluid step"
 expectIn "E 2e16: the warning points to solidProperties" "$scratch/log.runStiff" \
     "file: .*constant/solidProperties"
+expectIn "a solidPoints point far off the solid is warned of" "$scratch/log.runStiff" \
+    "the point \\(1 1 0\\) is [0-9.]+ m from solid 'block'"
 
 # -timers: the run summary has the time of each phase of the step, which
 # add up to no more than the time loop's wall clock and to most of it; the

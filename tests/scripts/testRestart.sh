@@ -117,6 +117,37 @@ done
 u=$(fieldValues "$scratch/fsiWhole/0.32/plate/displacement" | awk '{ m2 = $1*$1 + $2*$2; if (m2 > m) m = m2 } END { print sqrt(m) }')
 check "fsi: the plate moved ($u m)" awk -v u="$u" 'BEGIN { exit !(u > 1e-4) }'
 
+# A damaged restart time is refused, naming what is missing, instead of
+# going on from defaults: a field that carries the state, a body, every
+# particle of the solid (that one crashed a function object).
+c="$scratch/damaged"
+cp -r "$scratch/fsiHalves" "$c"
+setEnd "$c" 0.34
+wall=$(cd "$c/0" && ls -d */ | tr -d / | grep -vx -e water -e plate -e uniform | head -1)
+restartFails()    # restartFails <what> <pattern>: exit 1 saying pattern
+{
+    (cd "$c" && sphVcpmFsi > log.damaged 2>&1)
+    check "$1: exit status 1" [ $? -eq 1 ]
+    expectIn "$1: says what is wrong" "$c/log.damaged" "$2"
+    rm -rf "$c/0.32"
+    cp -r "$scratch/fsiHalves/0.32" "$c/0.32"
+}
+rm "$c/0.32/water/U"
+restartFails "restart without water/U" "Field .*0.32/water/U is missing: a restart needs it"
+rm "$c/0.32/plate/Umean"
+restartFails "restart without plate/Umean" "0.32/plate/Umean is missing"
+rm -r "$c/0.32/$wall"
+restartFails "restart without the walls" "Body $wall of 0/ is missing from the restart time"
+for f in "$c/0.32/plate"/*; do
+    python3 - "$f" <<'PY'
+import re, sys
+t = open(sys.argv[1]).read()
+open(sys.argv[1], 'w').write(re.sub(r'(nonuniform List<\w+>)\s*\d+\s*\(.*?\)\s*;',
+                                    r'\1 0();', t, flags=re.S))
+PY
+done
+restartFails "restart with an empty plate" "Body plate of .*0.32 has no particles"
+
 # Time names that would repeat: timeFormat fixed with 1 digit names 5e-05
 # and 1e-04 both "0.0"; the solver raises the precision, says so, and
 # writes two directories, each holding its own time.

@@ -620,6 +620,13 @@ TEST(functionObjects, errorsNameTheEntry)
         expectMessage(err, {"non-zero"});
     }
     {
+        // A 2D case: a front along z would see every particle at 0.
+        const auto err = error(
+            "f { type surgeFront; direction (0 0 1); }\n");
+        EXPECT_EQ(err.keyword(), "direction");
+        expectMessage(err, {"2D", "x-y plane"});
+    }
+    {
         tankScene noGravity;
         noGravity.model.g = {0, 0, 0};
         const auto err = catchFatal([&]()
