@@ -154,6 +154,16 @@ std::string readWholeFile(const std::filesystem::path& file,
                           const std::string& errorFile, int errorLine,
                           const std::string& what)
 {
+    // A FIFO or a device would block the open or never end.
+    std::error_code ec;
+    const auto status = std::filesystem::status(file, ec);
+    if (!ec && std::filesystem::exists(status)
+     && !std::filesystem::is_regular_file(status))
+    {
+        fatalIOError(errorFile, errorLine, "Cannot read " + what + " \""
+            + file.string() + "\": it is not a regular file (a FIFO, socket"
+            " or device)");
+    }
     std::ifstream is(file, std::ios::binary);
     if (!is)
     {

@@ -9,14 +9,21 @@ namespace sphvcpm
 static std::string composeReport(const std::string& message,
                                  const std::string& file, int line)
 {
+    // A NUL from a damaged file would cut the report short where it is
+    // printed as a C string: shown as \0 instead.
+    std::string text;
+    for (const char c : message)
+    {
+        text += c == '\0' ? std::string("\\0") : std::string(1, c);
+    }
     std::ostringstream os;
     if (file.empty())
     {
-        os << "\n--> SPHVCPM FATAL ERROR:\n" << message << "\n";
+        os << "\n--> SPHVCPM FATAL ERROR:\n" << text << "\n";
     }
     else
     {
-        os << "\n--> SPHVCPM FATAL IO ERROR:\n" << message << "\n\nfile: "
+        os << "\n--> SPHVCPM FATAL IO ERROR:\n" << text << "\n\nfile: "
            << file;
         if (line > 0)
         {

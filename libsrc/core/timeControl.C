@@ -30,6 +30,12 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
         "timePrecision", "runTimeModifiable", "logInterval", "device",
         "functions", "libs"});
 
+    // Read though unused, so that a missing ';' after them cannot swallow
+    // the entries that follow (OpenFOAM reads them too).
+    if (d.found("application")) d.get<std::string>("application");
+    if (d.found("libs")) d.get<std::vector<std::string>>("libs");
+    if (d.found("runTimeModifiable")) d.get<bool>("runTimeModifiable");
+
     const std::string from = d.getWordOrDefault("startFrom",
         {"startTime", "latestTime", "firstTime"}, "latestTime");
     tc.startFrom = from == "startTime" ? startFromType::startTime

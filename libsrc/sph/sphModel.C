@@ -269,8 +269,24 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
             readCaseDict(caseDir, "constant/fluidProperties", true);
         dict.checkKeywords({"rho0", "nu", "c0", "coefSound", "speedSystem",
             "gamma", "turbulence"});
-        m.rho0 = dict.getPositive("rho0");
-        m.nu = dict.getOrDefault<scalar>("nu", 1e-6);
+        // Dimensions, where written, must be these ([1 -3 0 0 0 0 0] for a
+        // viscosity is a slip that would otherwise run).
+        const auto positive = [&dict](const char* key,
+                                      const dimensionSet& dims)
+        {
+            const scalar v = dict.getDimensioned<scalar>(key, dims);
+            if (!(v > 0))
+            {
+                dict.fatalAt(key, "Keyword '" + std::string(key)
+                    + "': expected a positive number");
+            }
+            return v;
+        };
+        m.rho0 = positive("rho0", dimensions::density());
+        m.nu = dict.found("nu")
+          ? dict.getDimensioned<scalar>("nu",
+                                        dimensions::kinematicViscosity())
+          : scalar(1e-6);
         if (!(m.nu >= 0))
         {
             dict.fatalAt("nu", "the kinematic viscosity nu must be >= 0");
@@ -299,7 +315,7 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
         }
         if (hasC0)
         {
-            m.c0 = dict.getPositive("c0");
+            m.c0 = positive("c0", dimensions::velocity());
         }
         else
         {

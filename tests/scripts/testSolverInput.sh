@@ -135,6 +135,16 @@ fresh; sed -i 's/^adjustTimeStep .*/adjustTimeStep yes; minDeltaT 1e-3;/' "$scra
 expectFatal "a step below minDeltaT" "below minDeltaT" "particle id [0-9]+ of body water at \(" \
     "last good state is the start time, 0/"
 
+# Dimensions written must be the quantity's: a density's on nu is a slip.
+fresh; sed -i 's/^nu .*/nu [1 -3 0 0 0 0 0] 1e-06;/' "$scratch/c/constant/fluidProperties"
+expectFatal "nu with a density's dimensions" "constant/fluidProperties" "nu" "\\[0 2 -1 0 0 0 0\\]"
+# A dictionary that is a FIFO is refused rather than waited on; a missing
+# ';' after application no longer swallows the entry that follows.
+fresh; rm "$scratch/c/system/sphSchemes"; mkfifo "$scratch/c/system/sphSchemes"
+expectFatal "sphSchemes a FIFO" "system/sphSchemes" "not a regular file"
+fresh; sed -i 's/^application .*/application sphVcpmFsi/' "$scratch/c/system/controlDict"
+expectFatal "application without ';'" "system/controlDict" "Keyword 'application'.*expected ';'"
+
 # A write interval below minDeltaT would make every step land below the
 # floor: an input error naming writeInterval, before any step.
 fresh; sed -i 's/^writeInterval .*/writeInterval 1e-300;/' "$scratch/c/system/controlDict"

@@ -298,6 +298,22 @@ INSTANTIATE_TEST_SUITE_P(table, dictionaryValueError,
                          testing::ValuesIn(valueCases), valueCaseName);
 
 
+// A NUL byte inside a keyword: the report goes on past it (shown as \0)
+// to the file and line, instead of ending where a C string would.
+TEST(dictionaryErrors, nulByteDoesNotCutTheReport)
+{
+    const std::string text("a 1;\nad\0j 2;\n", 13);
+    const auto err = catchFatal([&]
+    {
+        dictionary::fromString(text, "withNul").checkKeywords({"a"});
+    });
+    const std::string shown(err.what());
+    EXPECT_NE(shown.find("ad\\0j"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("file: withNul at line 2"), std::string::npos)
+        << shown;
+}
+
+
 // * * * * * * * * * * * * * * * * Includes * * * * * * * * * * * * * * * //
 
 TEST(dictionaryIncludeErrors, recursionIsCaught)
