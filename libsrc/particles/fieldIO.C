@@ -1074,6 +1074,15 @@ void readField(const std::filesystem::path& file, particleBody& body)
             + " more bytes, the file has " + std::to_string(left)
             + " (a wrong count N or a truncated file)", countAt);
     }
+    if (uniform && body.size() == 0 && n > 0)
+    {
+        // Nothing bounds its N (one value stands for all): a body's size
+        // comes from a list of its values, position's when reading a time.
+        parser.fail("A uniform list " + std::to_string(n) + "{...} cannot"
+            " set the number of particles: write the values of '"
+            + fieldName + "' as a list, or read a listed field first",
+            countAt);
+    }
     if (body.size() != 0 && body.size() != n)
     {
         parser.fail("Field '" + fieldName + "' has " + std::to_string(n)

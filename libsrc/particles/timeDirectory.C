@@ -144,6 +144,20 @@ particleBody readBody(const fs::path& dir)
         }
     }
     std::sort(files.begin(), files.end());
+    for (const char* required : {"position", "id"})
+    {
+        if (!std::binary_search(files.begin(), files.end(), required))
+        {
+            fatalIOError((dir/required).string(), 0, "Missing field file '"
+                + std::string(required) + "' of body '" + body.name()
+                + "': every body has position and id");
+        }
+    }
+    // position first: its list, bounded by the file's size, gives the
+    // body's size, against which a uniform list N{v} is then checked
+    // (N{v} first would allocate any N it says).
+    std::stable_partition(files.begin(), files.end(),
+        [](const std::string& f) { return f == "position"; });
 
     // readField checks each size against the body's; an empty first field
     // would let a later one resize the body, so check that case here.
@@ -159,15 +173,6 @@ particleBody readBody(const fs::path& dir)
                 + " particles: all fields of a body must have the same size");
         }
         size = body.size();
-    }
-    for (const char* required : {"position", "id"})
-    {
-        if (!std::binary_search(files.begin(), files.end(), required))
-        {
-            fatalIOError((dir/required).string(), 0, "Missing field file '"
-                + std::string(required) + "' of body '" + body.name()
-                + "': every body has position and id");
-        }
     }
     return body;
 }

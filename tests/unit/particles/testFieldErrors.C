@@ -412,14 +412,34 @@ TEST_F(fieldErrors, inconsistentSizesInATimeDirectory)
         (bodyDir/"rho").string(), lineOf(rho, "\n2\n") + 1,
         {"Field 'rho' has 2 values but body 'water' has 3 particles"});
 
-    // An empty field read first must not let the others resize the body.
+    // An empty position (read first) must not let the others resize the
+    // body.
     particleBody none("water", bodyType::fluid, 3, 0.01);
-    none.addScalarField("rho");
     writeField(bodyDir/"rho", water(), "rho", writeFormat::ascii, 6);
-    writeField(bodyDir/"Aempty", none, "rho", writeFormat::binary, 6);
+    writeField(bodyDir/"position", none, "position", writeFormat::binary, 6);
     expectError(catchFatal([&]{ readTimeDirectory(dir_.path(), "0"); }),
         (bodyDir/"cell").string(), 0,
         {"Field 'cell' has 3 values but body 'water' has 0 particles"});
+    writeField(bodyDir/"position", water(), "position", writeFormat::binary,
+               6);
+
+    // A uniform list N{v} gives no size of its own: checked against
+    // position's, it cannot allocate the N it says (2e9 vectors, 48 GB).
+    particleBody withU = water();
+    withU.addVectorField("U");
+    writeField(bodyDir/"U", withU, "U", writeFormat::ascii, 6, "0/water");
+    std::string U = readText(bodyDir/"U");
+    U = U.substr(0, U.find("value"))
+        + "value nonuniform List<vector> 2000000000{(0 0 0)};\n";
+    writeText(bodyDir/"U", U);
+    expectError(catchFatal([&]{ readTimeDirectory(dir_.path(), "0"); }),
+        (bodyDir/"U").string(), lineOf(U, "2000000000"),
+        {"Field 'U' has 2000000000 values but body 'water' has 3 particles"});
+    // Read alone into an empty body it cannot set the body's size.
+    particleBody alone("water", bodyType::fluid, 3, 0.01);
+    expectError(catchFatal([&]{ readField(bodyDir/"U", alone); }),
+        (bodyDir/"U").string(), lineOf(U, "2000000000"),
+        {"A uniform list 2000000000{...} cannot set the number of particles"});
 }
 
 
