@@ -134,9 +134,18 @@ solidBodySet::solidBodySet
         label nClamped = 0;
         if (b.hasField("clamped"))
         {
+            const std::vector<label>& clamped = b.labelField("clamped");
             for (label i = 0; i < n; ++i)
             {
-                s.clamped[i] = b.labelField("clamped")[i] != 0;
+                if (clamped[i] != 0 && clamped[i] != 1)
+                {
+                    fatalError("Solid " + b.name() + ": particle id "
+                        + std::to_string(b.id()[i]) + " has clamped "
+                        + std::to_string(clamped[i]) + " in "
+                        + (caseDir/startTimeName/b.name()/"clamped").string()
+                        + ": expected 0 (free) or 1 (clamped)");
+                }
+                s.clamped[i] = clamped[i] != 0;
                 nClamped += s.clamped[i];
             }
         }
@@ -158,6 +167,24 @@ solidBodySet::solidBodySet
             << "        c_p = " << mat.pWaveSpeed << " m/s, stable deltaT = "
             << sb.stableDeltaT << " s\n";
         bodies_.push_back(std::move(sb));
+    }
+
+    // An entry for no solid of the case is most often a misspelt body
+    // name, whose solid then stops at its missing material; or a stray
+    // keyword. Either is unused: say so.
+    const fs::path file = caseDir_/"constant/solidProperties";
+    std::string solids;
+    for (const solidBody& b : bodies_) solids += " " + b.name;
+    for (const std::string& key : dictionary::fromFile(file).keys())
+    {
+        const bool used = std::any_of(bodies_.begin(), bodies_.end(),
+            [&](const solidBody& b) { return b.name == key; });
+        if (!used)
+        {
+            warning("Entry '" + key + "' of constant/solidProperties names"
+                " no solid body of the case (solids:" + solids + "): it is"
+                " not used", file.string());
+        }
     }
 }
 

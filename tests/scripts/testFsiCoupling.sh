@@ -120,6 +120,7 @@ done
 c="$scratch/fsiStiff"
 makeCase "$c" 0.01 2
 sed -i 's/E 2e6;/E 2e16;/' "$c/constant/solidProperties"
+echo "blok { rho 1000; E 1e6; nu 0.3; }" >> "$c/constant/solidProperties"
 sed -i 's/^endTime .*/endTime 1e-5;/' "$c/system/controlDict"
 # and a displacement point a metre off the block: followed, with a warning.
 sed -i 's/functions {/functions { far { type solidPoints; body block; points ((1 1 0)); }/' \
@@ -131,6 +132,8 @@ expectIn "E 2e16: warns of the sub-steps, naming the solid" "$scratch/log.runSti
     "Solid 'block' needs about [0-9.e+]+ sub-steps in each fluid step"
 expectIn "E 2e16: the warning points to solidProperties" "$scratch/log.runStiff" \
     "file: .*constant/solidProperties"
+expectIn "an entry of solidProperties for no solid is warned of" "$scratch/log.runStiff" \
+    "Entry 'blok' of constant/solidProperties names no solid body of the case \\(solids: block\\)"
 expectIn "a solidPoints point far off the solid is warned of" "$scratch/log.runStiff" \
     "the point \\(1 1 0\\) is [0-9.]+ m from solid 'block'"
 
