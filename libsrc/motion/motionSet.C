@@ -99,7 +99,15 @@ motionSet motionSet::read(const fs::path& caseDir)
         fatalError("Prescribed motions: " + file.string() + " does not"
             " exist");
     }
-    return motionSet(dictionary::fromFile(file), caseDir);
+    const dictionary dict = dictionary::fromFile(file);
+    if (dict.keys().empty())
+    {
+        // Present but empty (a truncated or half-written file): a case
+        // whose bodies stand still has no constant/motion at all.
+        fatalIOError(file.string(), 0, "Prescribed motions: " + file.string()
+            + " defines no motion; remove the file if no body moves");
+    }
+    return motionSet(dict, caseDir);
 }
 
 

@@ -299,6 +299,9 @@ TEST(motionSet, errors)
     const std::string angle = "angle { type constant; value 0.1;"
         " units radians; }\n";
 
+    // Present but empty (a truncated file): not the same as no motion.
+    expectFails("", 0, {"defines no motion", "remove the file"});
+    expectFails("// only a comment\n", 0, {"defines no motion"});
     // Zero axis; zero direction.
     expectFails("m\n{\nbodies (a);\norigin (0 0 0);\naxis (0 0 0);\n"
                 + angle + "}\n", 5, {"axis", "zero vector"});
