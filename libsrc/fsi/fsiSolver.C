@@ -241,6 +241,10 @@ void fsiSolver::readStartTime()
     deltaT_ = control_.deltaT;
     deltaT0_ = state.deltaT > 0 ? state.deltaT : control_.deltaT;
 
+    for (const std::string& left : removeInterruptedWrites(caseDir_))
+    {
+        log_<< "Removed " << left << ", left by an interrupted write\n";
+    }
     log_<< "Reading time " << startTimeName_ << "\n";
     std::vector<particleBody> bodies =
         readTimeDirectory(caseDir_, startTimeName_);

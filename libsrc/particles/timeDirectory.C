@@ -24,6 +24,7 @@
 #include <fcntl.h>
 #include <iomanip>
 #include <set>
+#include <signal.h>
 #include <sstream>
 #include <unistd.h>
 
@@ -348,6 +349,46 @@ void writeTimeDirectory(const fs::path& caseDir, const timeState& state,
 
 
 // * * * * * * * * * * * * * * * * * Reading * * * * * * * * * * * * * * * //
+
+std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir)
+{
+    std::vector<std::string> removed;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(caseDir, ec))
+    {
+        const std::string name = e.path().filename().string();
+        // .<time>.tmp.<pid> or .<time>.old.<pid>, <time> a time name.
+        std::size_t tag = name.rfind(".tmp.");
+        if (tag == std::string::npos) tag = name.rfind(".old.");
+        double t = 0;
+        if
+        (
+            name.size() < 2 || name[0] != '.' || tag == std::string::npos
+         || tag < 2 || !e.is_directory(ec)
+         || !parseTimeName(name.substr(1, tag - 1), t)
+        )
+        {
+            continue;
+        }
+        const std::string pid = name.substr(tag + 5);
+        if (pid.empty()
+         || pid.find_first_not_of("0123456789") != std::string::npos)
+        {
+            continue;
+        }
+        // A live writer (kill 0 succeeds, or is refused to us) keeps it.
+        const long id = std::stol(pid);
+        if (::kill(pid_t(id), 0) == 0 || errno == EPERM)
+        {
+            continue;
+        }
+        fs::remove_all(e.path(), ec);
+        removed.push_back(name);
+    }
+    std::sort(removed.begin(), removed.end());
+    return removed;
+}
+
 
 std::vector<std::string> bodyNames(const fs::path& caseDir,
                                    const std::string& timeName)
