@@ -221,5 +221,9 @@ expectFatal noLevel 's| level 0.3;||' \
     "Keyword 'seed'" "not inside a container" "give a level"
 expectFatal badSide 's|side outside|side out|' \
     "'side'" "unknown value 'out'"
+# A second fluid filled into the same tank: its every particle would sit
+# on one of the first's.
+expectFatal twoFluidsOverlap 's|^    water$|    water2 { type fluid; rho 1000; shapes { w { shape box; min (0.1 0.1 0.05); max (0.4 0.4 0.2); } } }\n    water|' \
+    "Body 'water2?' \\(fluid\\) overlaps the fluid body water2?: [0-9]+ of its lattice nodes"
 
 finish
