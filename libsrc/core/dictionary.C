@@ -438,7 +438,8 @@ dictionary::dictionary(const dictionary& d)
     line_(d.line_),
     parent_(nullptr),
     entries_(d.entries_),
-    header_(d.header_ ? std::make_unique<dictionary>(*d.header_) : nullptr)
+    header_(d.header_ ? std::make_unique<dictionary>(*d.header_) : nullptr),
+    fewestVectorComponents_(d.topDict().fewestVectorComponents_)
 {
     reparent();
 }
@@ -463,7 +464,8 @@ dictionary::dictionary(dictionary&& d) noexcept
     line_(d.line_),
     parent_(d.parent_),
     entries_(std::move(d.entries_)),
-    header_(std::move(d.header_))
+    header_(std::move(d.header_)),
+    fewestVectorComponents_(d.topDict().fewestVectorComponents_)
 {
     d.parent_ = nullptr;
     reparent();
@@ -480,6 +482,7 @@ dictionary& dictionary::operator=(dictionary&& d) noexcept
         const int line = d.line_;
         std::vector<entry> entries = std::move(d.entries_);
         std::unique_ptr<dictionary> header = std::move(d.header_);
+        const int fewest = d.topDict().fewestVectorComponents_;
 
         // A sub-dictionary keeps its place (parent and scoped name); a
         // top-level one takes the name of what it is given.
@@ -491,6 +494,7 @@ dictionary& dictionary::operator=(dictionary&& d) noexcept
         line_ = line;
         entries_ = std::move(entries);
         header_ = std::move(header);
+        fewestVectorComponents_ = fewest;
         for (auto& e : entries_)
         {
             if (e.isDict())
@@ -521,6 +525,12 @@ void dictionary::reparent()
 dictionary dictionary::fromFile(const std::filesystem::path& file)
 {
     return dictionaryParser::readFile(file);
+}
+
+
+void dictionary::setCaseDimensions(const int nDimensions)
+{
+    fewestVectorComponents_ = nDimensions == 3 ? 3 : 2;
 }
 
 

@@ -27,12 +27,14 @@ class valueReader
 {
 public:
     valueReader(const std::vector<token>& tokens, const std::string& keyword,
-                const std::string& file, int line)
+                const std::string& file, int line,
+                int fewestVectorComponents = 2)
     :
         t_(tokens),
         keyword_(keyword),
         file_(file),
-        line_(line)
+        line_(line),
+        fewestVectorComponents_(std::size_t(fewestVectorComponents))
     {}
 
     bool atEnd() const { return i_ >= t_.size(); }
@@ -183,10 +185,12 @@ public:
             expected("')' to close the vector opened at line "
                 + std::to_string(lineAt(open)));
         }
-        if (c.size() != 2 && c.size() != 3)
+        if (c.size() < fewestVectorComponents_ || c.size() > 3)
         {
-            failAt(open, "expected a vector of 2 or 3 components, found "
-                + std::to_string(c.size()) + " components");
+            failAt(open, std::string(fewestVectorComponents_ == 3
+                  ? "expected a vector of 3 components (x y z) in a 3D case"
+                  : "expected a vector of 2 or 3 components")
+                + ", found " + std::to_string(c.size()) + " components");
         }
         ++i_;
         return {scalar(c[0]), scalar(c[1]), scalar(c.size() == 3 ? c[2] : 0)};
@@ -351,6 +355,7 @@ private:
     const std::string& keyword_;
     const std::string& file_;
     int line_;
+    std::size_t fewestVectorComponents_;
     std::size_t i_ = 0;
 
     template<class T, class Element>
@@ -553,9 +558,10 @@ const entry& valueEntry(const dictionary& dict, const std::string& key,
 
 template<class T>
 T parseTokens(const std::vector<token>& tokens, const std::string& keyword,
-              const std::string& file, int line)
+              const std::string& file, int line,
+              const int fewestVectorComponents)
 {
-    valueReader r(tokens, keyword, file, line);
+    valueReader r(tokens, keyword, file, line, fewestVectorComponents);
     T v = readValue(r, static_cast<T*>(nullptr));
     r.expectEnd();
     return v;
@@ -566,7 +572,8 @@ template<class T>
 T dictionary::get(const std::string& key) const
 {
     const entry& e = valueEntry(*this, key, "a value");
-    return parseTokens<T>(e.tokens(), key, e.file(), e.line());
+    return parseTokens<T>(e.tokens(), key, e.file(), e.line(),
+                          topDict().fewestVectorComponents_);
 }
 
 
@@ -582,7 +589,8 @@ T dictionary::getDimensioned(const std::string& key,
                              const dimensionSet& dims) const
 {
     const entry& e = valueEntry(*this, key, "a dimensioned value");
-    valueReader r(e.tokens(), key, e.file(), e.line());
+    valueReader r(e.tokens(), key, e.file(), e.line(),
+                  topDict().fewestVectorComponents_);
     dimensionSet found;
     bool hasDims = false;
     T v;
@@ -670,7 +678,7 @@ void dictionary::set<const char*>(const std::string& key,
 
 #define SPHVCPM_DICTIONARY_TYPE(T)                                            \
     template T parseTokens<T>(const std::vector<token>&, const std::string&, \
-                              const std::string&, int);                      \
+                              const std::string&, int, int);                 \
     template T dictionary::get<T>(const std::string&) const;                 \
     template T dictionary::getOrDefault<T>(const std::string&, const T&)     \
         const;                                                               \

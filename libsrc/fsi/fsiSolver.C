@@ -165,6 +165,7 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         << " bytes per particle and "
         << 3*sizeof(label) << " per cell\n" << std::endl;
 
+    control_.dict.setCaseDimensions(model_.nDimensions);
     functions_ = functionObject::readAll(control_.dict, caseDir_,
         startTimeName_, model_, bodies_);
 

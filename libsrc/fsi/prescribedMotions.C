@@ -20,7 +20,7 @@ prescribedMotions::prescribedMotions
     std::ostream& log
 )
 :
-    set_(motionSet::readIfPresent(caseDir))
+    set_(motionSet::readIfPresent(caseDir, nDimensions))
 {
     if (set_.empty()) return;
 

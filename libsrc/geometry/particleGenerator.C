@@ -64,7 +64,7 @@ particleGenerator::particleGenerator
               " nDimensions, dp and bodies { <name> { type fluid|wall|solid;"
               " shapes { ... } } }");
     }
-    const dictionary dict = dictionary::fromFile(dictFile_);
+    dictionary dict = dictionary::fromFile(dictFile_);
     dict.checkKeywords(topKeywords);
 
     const label nDim = dict.get<label>("nDimensions");
@@ -74,6 +74,7 @@ particleGenerator::particleGenerator
             " x-y plane, z = 0) or 3, found " + std::to_string(nDim));
     }
     nDimensions_ = int(nDim);
+    dict.setCaseDimensions(nDimensions_);
     dp_ = dict.getPositive("dp");
     const vec3 origin = dict.getOrDefault<vec3>("latticeOrigin", {0, 0, 0});
 

@@ -91,7 +91,7 @@ motionSet::motionSet(const dictionary& dict, const fs::path& caseDir)
 }
 
 
-motionSet motionSet::read(const fs::path& caseDir)
+motionSet motionSet::read(const fs::path& caseDir, const int nDimensions)
 {
     const fs::path file = caseDir/"constant"/"motion";
     if (!fs::is_regular_file(file))
@@ -99,7 +99,8 @@ motionSet motionSet::read(const fs::path& caseDir)
         fatalError("Prescribed motions: " + file.string() + " does not"
             " exist");
     }
-    const dictionary dict = dictionary::fromFile(file);
+    dictionary dict = dictionary::fromFile(file);
+    dict.setCaseDimensions(nDimensions);
     if (dict.keys().empty())
     {
         // Present but empty (a truncated or half-written file): a case
@@ -111,13 +112,14 @@ motionSet motionSet::read(const fs::path& caseDir)
 }
 
 
-motionSet motionSet::readIfPresent(const fs::path& caseDir)
+motionSet motionSet::readIfPresent(const fs::path& caseDir,
+                                   const int nDimensions)
 {
     if (!fs::exists(caseDir/"constant"/"motion"))
     {
         return motionSet();
     }
-    return read(caseDir);
+    return read(caseDir, nDimensions);
 }
 
 

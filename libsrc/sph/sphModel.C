@@ -107,7 +107,8 @@ vec3 readGravity(const std::filesystem::path& caseDir, const int nDimensions)
     {
         return nDimensions == 3 ? vec3{0, 0, -9.81} : vec3{0, -9.81, 0};
     }
-    const dictionary dict = dictionary::fromFile(file);
+    dictionary dict = dictionary::fromFile(file);
+    dict.setCaseDimensions(nDimensions);
     dict.checkKeywords({"dimensions", "value"});
     const vec3 g = dict.get<vec3>("value");
     if (nDimensions == 2 && g.z != 0)
@@ -128,8 +129,8 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
 
     // system/sphSchemes
     {
-        const dictionary dict = readCaseDict(caseDir, "system/sphSchemes",
-                                             true);
+        dictionary dict = readCaseDict(caseDir, "system/sphSchemes", true);
+        dict.setCaseDimensions(nDimensions);
         dict.checkKeywords({"kernel", "hOverDp", "cellDivisor",
             "densityDiffusion", "viscosity", "shifting", "boundary",
             "domain", "initialDensity", "timeScheme"});

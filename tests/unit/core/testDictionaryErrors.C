@@ -298,6 +298,28 @@ INSTANTIATE_TEST_SUITE_P(table, dictionaryValueError,
                          testing::ValuesIn(valueCases), valueCaseName);
 
 
+// Vectors of (x y) are a 2D case's shorthand for z = 0; a dictionary of a
+// 3D case (and its sub-dictionaries, and copies of them) refuses them.
+TEST(dictionaryErrors, twoComponentVectorsOnlyIn2D)
+{
+    dictionary d = dictionary::fromString("g (0 -9.81);\ns { p (1 2); }\n",
+                                          "case");
+    EXPECT_EQ(d.get<vec3>("g"), (vec3{0, -9.81, 0}));
+    d.setCaseDimensions(3);
+    expectError(catchFatal([&]{ d.get<vec3>("g"); }), "case", 1,
+                {"expected a vector of 3 components (x y z) in a 3D case",
+                 "found 2 components"});
+    const dictionary sub = d.subDict("s");
+    expectError(catchFatal([&]{ sub.get<vec3>("p"); }), "case", 2,
+                {"3D case"});
+    expectError(catchFatal([&]
+        { d.subDict("s").getDimensioned<vec3>("p", dimensionSet()); }),
+        "case", 2, {"3D case"});
+    d.setCaseDimensions(2);
+    EXPECT_EQ(d.subDict("s").get<vec3>("p"), (vec3{1, 2, 0}));
+}
+
+
 // A NUL byte inside a keyword: the report goes on past it (shown as \0)
 // to the file and line, instead of ending where a C string would.
 TEST(dictionaryErrors, nulByteDoesNotCutTheReport)
