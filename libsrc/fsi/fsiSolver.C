@@ -502,13 +502,18 @@ void fsiSolver::setSoundSpeed()
     const scalar gMag = mag(model_.g);
     const vec3 up = gMag > 0 ? (-1/gMag)*model_.g : vec3{0, 0, 0};
     scalar lo = std::numeric_limits<scalar>::max(), hi = -lo, u2 = 0;
+    label fastest = -1;
     for (label i = 0; i < particles_.size(); ++i)
     {
         if (particles_.kind[i] != fluidKind) continue;
         const scalar z = dot(toPoint(up), particles_.position[i]);
         lo = std::min(lo, z);
         hi = std::max(hi, z);
-        u2 = std::max(u2, magSqr(particles_.velocity[i]));
+        if (magSqr(particles_.velocity[i]) > u2)
+        {
+            u2 = magSqr(particles_.velocity[i]);
+            fastest = i;
+        }
     }
     fluidHeight_ = gMag > 0 ? hi - lo + model_.dp : 0;
 
@@ -525,6 +530,14 @@ void fsiSolver::setSoundSpeed()
     else if (model_.coefSound > 0)
     {
         model_.c0 = model_.coefSound*std::max(speedSystem, std::sqrt(u2));
+        if (std::sqrt(u2) > speedSystem)
+        {
+            // One damaged velocity can set it (and so every step): say
+            // which particle does.
+            log_<< "c0 = coefSound x " << std::sqrt(u2) << " m/s, the"
+                << " initial speed of " << describeParticle(fastest)
+                << ", above the scene's " << speedSystem << " m/s\n";
+        }
         if (!(model_.c0 > 0))
         {
             fatalIOError(file, 0, "coefSound needs gravity or an initial"

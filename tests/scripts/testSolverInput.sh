@@ -135,6 +135,13 @@ fresh; sed -i 's/^adjustTimeStep .*/adjustTimeStep yes; minDeltaT 1e-3;/' "$scra
 expectFatal "a step below minDeltaT" "below minDeltaT" "particle id [0-9]+ of body water at \(" \
     "last good state is the start time, 0/"
 
+# An initial speed above the scene's sets c0 with coefSound: the log says
+# which particle (one damaged velocity would set every step).
+fresh; sed -i 's/^\( *type  *fluid;\)/\1 U (30 0 0);/' "$scratch/c/system/generateParticlesDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+expectIn "c0 from an initial speed: the log names the particle" "$scratch/c/log.solver" \
+    "c0 = coefSound x 30 m/s, the initial speed of id [0-9]+ of body water at"
+
 # Dimensions written must be the quantity's: a density's on nu is a slip.
 fresh; sed -i 's/^nu .*/nu [1 -3 0 0 0 0 0] 1e-06;/' "$scratch/c/constant/fluidProperties"
 expectFatal "nu with a density's dimensions" "constant/fluidProperties" "nu" "\\[0 2 -1 0 0 0 0\\]"
