@@ -382,6 +382,13 @@ std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir)
         {
             continue;
         }
+        // So does a missing <time>: a write stopped between its two
+        // renames (target to .old, .tmp to target) left the time's only
+        // copies there.
+        if (!fs::is_directory(caseDir/name.substr(1, tag - 1), ec))
+        {
+            continue;
+        }
         fs::remove_all(e.path(), ec);
         removed.push_back(name);
     }

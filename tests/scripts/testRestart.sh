@@ -165,15 +165,19 @@ expectIn "names: the precision raised, with a warning" "$c/log.sphVcpmFsi" \
 check "names: 0.00005 and 0.00010 written" [ -d "$c/0.00005/water" -a -d "$c/0.00010/water" ]
 check "names: 0.00005 holds its own time" grep -q '^value *5e-05;' "$c/0.00005/uniform/time"
 # What interrupted writes left (hidden .<time>.tmp.<pid>) is removed when
-# its writer is gone, and kept while it runs (this shell stands for one).
+# its writer is gone and <time> was written; it is kept while its writer
+# runs (this shell stands for one), and where <time> is missing (a write
+# stopped between its two renames leaves the time's only copies there).
 true & wait $!; gone=$!
-mkdir -p "$c/.0.0003.tmp.$gone/water" "$c/.0.0003.tmp.$$/water"
+mkdir -p "$c/.0.00005.tmp.$gone/water" "$c/.0.00005.tmp.$$/water" \
+    "$c/.0.0003.old.$gone/water"
 (cd "$c" && sphVcpmFsi > log.leftovers 2>&1)
 check "leftovers: the run ends" grep -q '^End' "$c/log.leftovers"
-check "leftovers: a dead writer's is removed" [ ! -d "$c/.0.0003.tmp.$gone" ]
-expectIn "leftovers: the log says so" "$c/log.leftovers" "Removed .0.0003.tmp.$gone, left by an interrupted write"
-check "leftovers: a running writer's is kept" [ -d "$c/.0.0003.tmp.$$" ]
-rm -rf "$c/.0.0003.tmp.$$"
+check "leftovers: a dead writer's is removed" [ ! -d "$c/.0.00005.tmp.$gone" ]
+expectIn "leftovers: the log says so" "$c/log.leftovers" "Removed .0.00005.tmp.$gone, left by an interrupted write"
+check "leftovers: a running writer's is kept" [ -d "$c/.0.00005.tmp.$$" ]
+check "leftovers: one whose time is missing is kept" [ -d "$c/.0.0003.old.$gone" ]
+rm -rf "$c/.0.00005.tmp.$$" "$c/.0.0003.old.$gone"
 
 # A time directory copied under another name (its uniform/time says
 # another time) is refused, naming the file, not restarted at the wrong time.
