@@ -21,6 +21,7 @@ namespace fs = std::filesystem;
 
 vcpmMaterial solidBodySet::readMaterial
 (
+    const dictionary& all,
     const std::string& name,
     const int nDimensions,
     const scalar dp,
@@ -29,13 +30,6 @@ vcpmMaterial solidBodySet::readMaterial
     scalar& latticeDamping
 ) const
 {
-    const fs::path file = caseDir_/"constant/solidProperties";
-    if (!fs::is_regular_file(file))
-    {
-        fatalError("Solid " + name + ": " + file.string() + " does not exist;"
-            " it gives the material as " + name + " { E ...; nu ...; }");
-    }
-    const dictionary all = dictionary::fromFile(file);
     const dictionary& props = all.subDict(name);
     props.checkKeywords({"rho", "E", "nu", "lattice", "plane",
                          "surfaceCorrection", "damping", "latticeDamping"});
@@ -73,9 +67,19 @@ solidBodySet::solidBodySet
 :
     caseDir_(caseDir)
 {
-    const bool anySolid = std::any_of(start.begin(), start.end(),
+    const auto firstSolid = std::find_if(start.begin(), start.end(),
         [](const particleBody& b) { return b.type() == bodyType::solid; });
-    if (!anySolid) return;
+    if (firstSolid == start.end()) return;
+
+    // Read once: every solid's material, and the check of its entries.
+    const fs::path file = caseDir_/"constant/solidProperties";
+    if (!fs::is_regular_file(file))
+    {
+        const std::string& name = firstSolid->name();
+        fatalError("Solid " + name + ": " + file.string() + " does not exist;"
+            " it gives the material as " + name + " { E ...; nu ...; }");
+    }
+    const dictionary solidProperties = dictionary::fromFile(file);
 
     // The reference lattice: the start itself, or 0/ on a restart.
     std::vector<particleBody> zero;
@@ -97,7 +101,8 @@ solidBodySet::solidBodySet
         const scalar massRho = b.hasField("mass") && n
           ? b.scalarField("mass")[0]/std::pow(b.dp(), nDim) : 0;
         scalar damping = 0, latticeDamping = 0;
-        const vcpmMaterial mat = readMaterial(b.name(), nDim, b.dp(),
+        const vcpmMaterial mat = readMaterial(solidProperties, b.name(),
+                                              nDim, b.dp(),
                                               massRho, damping,
                                               latticeDamping);
 
@@ -172,10 +177,9 @@ solidBodySet::solidBodySet
     // An entry for no solid of the case is most often a misspelt body
     // name, whose solid then stops at its missing material; or a stray
     // keyword. Either is unused: say so.
-    const fs::path file = caseDir_/"constant/solidProperties";
     std::string solids;
     for (const solidBody& b : bodies_) solids += " " + b.name;
-    for (const std::string& key : dictionary::fromFile(file).keys())
+    for (const std::string& key : solidProperties.keys())
     {
         const bool used = std::any_of(bodies_.begin(), bodies_.end(),
             [&](const solidBody& b) { return b.name == key; });
