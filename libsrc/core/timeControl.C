@@ -73,11 +73,12 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
         d.fatalAt("writeInterval", "writeControl timeStep needs a whole"
             " number of steps as writeInterval");
     }
-    if (tc.writeControl != writeControlType::timeStep
+    if (tc.writeControl == writeControlType::adjustableRunTime
      && tc.writeInterval < tc.minDeltaT)
     {
         // Each write time is landed on, so every step would be shorter
-        // than the floor the run is stopped at.
+        // than the floor the run is stopped at (runTime writes after the
+        // step that passes it: every step, at worst).
         std::ostringstream os;
         os  << "writeInterval " << tc.writeInterval << " s is below minDeltaT "
             << tc.minDeltaT << " s (the smallest time step allowed; by"
@@ -125,8 +126,8 @@ writeSchedule::writeSchedule(const timeControl& control,
                              const double startTime)
 :
     control_(control),
-    next_((std::floor(startTime/control.writeInterval + 1e-9) + 1)
-          *control.writeInterval),
+    nextIndex_(std::floor(startTime/control.writeInterval + 1e-9) + 1),
+    next_(nextIndex_*control.writeInterval),
     precision_(control.timePrecision),
     lastName_(timeName(startTime, control.format, control.timePrecision)),
     lastTime_(startTime)
@@ -192,9 +193,29 @@ void writeSchedule::written(const double time, const std::string& name,
                             const std::filesystem::path& caseDir,
                             const std::string& startTimeName)
 {
-    while (reached(time, next_))
+    // The k-th write time as k*writeInterval: a sum of intervals would
+    // drift (a run from -1 by 0.1 would name its zero -1.38778e-16). Past
+    // several write times at once (runTime with an interval below the
+    // step), straight to the next one after `time`.
+    const double interval = control_.writeInterval;
+    if (reached(time, next_))
     {
-        next_ += control_.writeInterval;
+        nextIndex_ = std::max(nextIndex_ + 1,
+                              std::floor(time/interval + 1e-9) + 1);
+        next_ = nextIndex_*interval;
+    }
+    if (reached(time, next_))
+    {
+        // Round-off at a write time: the one after.
+        nextIndex_ += 1;
+        next_ = nextIndex_*interval;
+    }
+    if (reached(time, next_))
+    {
+        // An interval below the round-off of the time (the index no longer
+        // counts in ones): the write after the next step.
+        next_ = time + std::max(interval, 2e-12*std::abs(time));
+        nextIndex_ = next_/interval;
     }
     lastName_ = name;
     lastTime_ = time;
@@ -222,6 +243,12 @@ std::string writeSchedule::name(const double t) const
 
 std::string writeSchedule::writeName(const double t)
 {
+    // Written again at the same time (the last good state of a run that
+    // blew up right after a write): the same directory.
+    if (t == lastTime_)
+    {
+        return lastName_;
+    }
     // Names that read as the same number ("0.0" and "0.00") repeat too.
     const auto same = [](const std::string& a, const std::string& b)
     {

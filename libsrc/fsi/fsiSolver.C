@@ -6,6 +6,7 @@
 #include "error.H"
 #include "fluidInteractions.H"
 #include "pairRates.H"
+#include "startState.H"
 #include "parallel.H"
 #include "withKernel.H"
 
@@ -242,14 +243,11 @@ void fsiSolver::readStartTime()
     deltaT_ = control_.deltaT;
     deltaT0_ = state.deltaT > 0 ? state.deltaT : control_.deltaT;
 
-    for (const std::string& left : removeInterruptedWrites(caseDir_))
-    {
-        log_<< "Removed " << left << ", left by an interrupted write\n";
-    }
+    clearInterruptedWrites(caseDir_, log_);
     log_<< "Reading time " << startTimeName_ << "\n";
     std::vector<particleBody> bodies =
         readTimeDirectory(caseDir_, startTimeName_);
-    checkStartState(bodies, state);
+    checkStartState(caseDir_, startTimeName_, bodies, state, false, log_);
 
     int nDim = 0;
     scalar dp = 0;
@@ -400,76 +398,6 @@ void fsiSolver::readStartTime()
     log_<< "    dp = " << dp << " m, " << nDim << "D, time = " << time_
         << "\n" << std::endl;
     placeMovingWalls();
-}
-
-
-void fsiSolver::checkStartState(const std::vector<particleBody>& bodies,
-                                const timeState& state) const
-{
-    const std::string dir = (caseDir_/startTimeName_).string();
-    for (const particleBody& b : bodies)
-    {
-        if (b.size() == 0)
-        {
-            fatalError("Body " + b.name() + " of " + dir + " has no"
-                " particles (its fields hold none): generateParticles and"
-                " the solver never write an empty body, so the directory is"
-                " damaged");
-        }
-    }
-    if (state.index == 0)
-    {
-        double named = 0;
-        if (parseTimeName(startTimeName_, named) && named != 0
-         && !std::filesystem::exists(caseDir_/startTimeName_/"uniform/time"))
-        {
-            warning("Time " + startTimeName_ + " has no uniform/time: it"
-                " starts as a fresh start (hydrostatic density; a solid's"
-                " reference lattice is its positions there). Every write of"
-                " the solver has it: if this is one, it was damaged", dir);
-        }
-        return;
-    }
-
-    // A restart continues the state the solver wrote: every body of the
-    // initial time, with the fields that carry the state across steps.
-    // One missing would silently start again from a default.
-    for (const std::string& name : bodyNames(caseDir_, "0"))
-    {
-        const bool found = std::any_of(bodies.begin(), bodies.end(),
-            [&](const particleBody& b) { return b.name() == name; });
-        if (!found)
-        {
-            fatalError("Body " + name + " of 0/ is missing from the restart"
-                " time " + dir + ": every write of the solver holds every"
-                " body, so the directory is damaged");
-        }
-    }
-    for (const particleBody& b : bodies)
-    {
-        std::vector<std::string> needed{"U"};
-        if (b.type() == bodyType::solid)
-        {
-            needed.push_back("Umean");
-            if (std::filesystem::exists(caseDir_/"0"/b.name()/"clamped"))
-            {
-                needed.push_back("clamped");
-            }
-        }
-        else
-        {
-            needed.insert(needed.end(), {"rho", "mass"});
-        }
-        for (const std::string& field : needed)
-        {
-            if (!b.hasField(field))
-            {
-                fatalError("Field " + dir + "/" + b.name() + "/" + field
-                    + " is missing: a restart needs it (the solver writes"
-                    " it every time), so the directory is damaged");
-            }
-        }
-    }
 }
 
 
@@ -827,10 +755,19 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
         finite = isFinite(v.position[i]) && isFinite(v.velocity[i])
               && isFinite(v.rho[i]);
     }
-    if (finite && stepsRun_ == 0 && !undoPredictor)
+    // Not written again where it is on disk already: the start, or a
+    // write just before this step.
+    if (finite && stepsRun_ == 0)
     {
         msg << "The last good state is the start time, "
             << startTimeName_ << "/.\n";
+    }
+    else if (finite && time_ == schedule_->lastWriteTime())
+    {
+        finishWrite();
+        msg << "The last good state (time " << str(time_, 10)
+            << ") is the last write, " << schedule_->lastWriteName()
+            << "/.\n";
     }
     else if (finite)
     {

@@ -8,6 +8,7 @@
 #include "error.H"
 #include "parallel.H"
 #include "sphModel.H"
+#include "startState.H"
 #include "timeDirectory.H"
 
 #include <algorithm>
@@ -59,10 +60,12 @@ solidOnlySolver::solidOnlySolver
     beginTime_ = time_;
     const bool freshStart = state.index == 0;
 
+    clearInterruptedWrites(caseDir_, log_);
     log_<< "Reading time " << startTimeName_ << " (solids alone: no fluid"
         << " body)\n";
     const std::vector<particleBody> start =
         readTimeDirectory(caseDir_, startTimeName_);
+    checkStartState(caseDir_, startTimeName_, start, state, true, log_);
     nDim_ = start.front().nDimensions();
     for (const particleBody& b : start)
     {

@@ -18,11 +18,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <iomanip>
+#include <limits>
 #include <set>
 #include <signal.h>
 #include <sstream>
@@ -376,8 +378,16 @@ std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir)
         {
             continue;
         }
+        // Not a process id (beyond pid_t): not the writer's name.
+        long id = 0;
+        const auto [end, err] =
+            std::from_chars(pid.data(), pid.data() + pid.size(), id);
+        if (err != std::errc() || id <= 0
+         || id > long(std::numeric_limits<pid_t>::max()))
+        {
+            continue;
+        }
         // A live writer (kill 0 succeeds, or is refused to us) keeps it.
-        const long id = std::stol(pid);
         if (::kill(pid_t(id), 0) == 0 || errno == EPERM)
         {
             continue;

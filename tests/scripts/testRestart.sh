@@ -141,15 +141,33 @@ rm "$c/0.32/plate/Umean"
 restartFails "restart without plate/Umean" "0.32/plate/Umean is missing"
 rm -r "$c/0.32/$wall"
 restartFails "restart without the walls" "Body $wall of 0/ is missing from the restart time"
-for f in "$c/0.32/plate"/*; do
-    python3 - "$f" <<'PY'
+# emptyFields <body dir>: every field of the body with no particles.
+emptyFields()
+{
+    local f
+    for f in "$1"/*; do
+        [ "${f##*/}" = bodyProperties ] && continue
+        python3 - "$f" <<'PY'
 import re, sys
 t = open(sys.argv[1]).read()
 open(sys.argv[1], 'w').write(re.sub(r'(nonuniform List<\w+>)\s*\d+\s*\(.*?\)\s*;',
                                     r'\1 0();', t, flags=re.S))
 PY
-done
+    done
+}
+emptyFields "$c/0.32/plate"
 restartFails "restart with an empty plate" "Body plate of .*0.32 has no particles"
+
+# A fluid body may lose every particle through the domain bounds, and the
+# solver writes it empty: a restart from there goes on (the solid and the
+# walls alone), saying so.
+emptyFields "$c/0.32/water"
+(cd "$c" && sphVcpmFsi > log.emptyWater 2>&1)
+check "restart with an empty water: the run ends" grep -q '^End' "$c/log.emptyWater"
+expectIn "restart with an empty water: the log says so" "$c/log.emptyWater" \
+    "water \\(fluid\\): no particles left"
+rm -rf "$c"/0.3[0-9]*
+cp -r "$scratch/fsiHalves/0.32" "$c/0.32"
 
 # Time names that would repeat: timeFormat fixed with 1 digit names 5e-05
 # and 1e-04 both "0.0"; the solver raises the precision, says so, and
@@ -178,6 +196,22 @@ expectIn "leftovers: the log says so" "$c/log.leftovers" "Removed .0.00005.tmp.$
 check "leftovers: a running writer's is kept" [ -d "$c/.0.00005.tmp.$$" ]
 check "leftovers: one whose time is missing is kept" [ -d "$c/.0.0003.old.$gone" ]
 rm -rf "$c/.0.00005.tmp.$$" "$c/.0.0003.old.$gone"
+# A name with a number beyond any process id is not the writer's: kept,
+# and no crash on reading it.
+mkdir -p "$c/.0.00005.tmp.99999999999999999999/water"
+(cd "$c" && sphVcpmFsi > log.longPid 2>&1)
+check "leftovers: a name beyond any process id: the run ends" grep -q '^End' "$c/log.longPid"
+check "leftovers: a name beyond any process id is kept" [ -d "$c/.0.00005.tmp.99999999999999999999" ]
+rm -rf "$c/.0.00005.tmp.99999999999999999999"
+
+# A fluid-only restart needs no 0/: with 0/ archived it compares the
+# restart time with the earliest time left, and goes on.
+mv "$c/0" "$c/0.archived"
+setEnd "$c" 1.5e-4
+(cd "$c" && sphVcpmFsi > log.noZero 2>&1)
+check "restart without 0/: the run ends" grep -q '^End' "$c/log.noZero"
+check "restart without 0/: 0.00015 written" [ -d "$c/0.00015/water" ]
+mv "$c/0.archived" "$c/0"
 
 # A time directory copied under another name (its uniform/time says
 # another time) is refused, naming the file, not restarted at the wrong time.
@@ -187,5 +221,17 @@ check "copied time: exit status 1" [ $? -eq 1 ]
 expectIn "copied time: says what is wrong" "$c/log.copied" \
     "the time 5.0000000000000002e-05 is not the time of its directory '0.0002'"
 expectIn "copied time: names the file" "$c/log.copied" "0.0002/uniform/time at line"
+
+# A non-zero time without uniform/time (0/ copied there, without its
+# uniform/) starts as a fresh start from it, with a warning: every write
+# of the solvers has one.
+rm -rf "$c/0.0002"
+cp -r "$c/0" "$c/0.0003"
+rm -rf "$c/0.0003/uniform"
+setEnd "$c" 3.5e-4
+(cd "$c" && sphVcpmFsi > log.noUniform 2>&1)
+check "time without uniform/time: the run ends" grep -q '^End' "$c/log.noUniform"
+expectIn "time without uniform/time: a warning" "$c/log.noUniform" \
+    "Time 0.0003 has no uniform/time: it starts as a fresh start"
 
 finish

@@ -80,6 +80,40 @@ print("tip deflection %.6g m at x = %g, Timoshenko %.6g m (%+.3f %%)"
 sys.exit(0 if abs(w/ref - 1) < 0.03 else 1)
 PY
 
+# Restarts of the solid alone get the fluid solver's checks: what an
+# interrupted write left is removed, a damaged time is refused.
+r="$scratch/restart"
+cp -r "$c" "$r"
+sed -i 's/^endTime .*/endTime 0.4;/' "$r/system/controlDict"
+true & wait $!; gone=$!
+mkdir -p "$r/.0.2.tmp.$gone/beam"
+rm "$r/0.3/beam/U"
+sphVcpmFsi -case "$r" > "$scratch/log.damaged" 2>&1
+check "restart without beam/U: exit status 1" [ $? -eq 1 ]
+expectIn "restart without beam/U: says what is missing" "$scratch/log.damaged" \
+    "Field .*0.3/beam/U is missing: a restart needs it"
+expectIn "restart: an interrupted write's leftover removed" "$scratch/log.damaged" \
+    "Removed .0.2.tmp.$gone, left by an interrupted write"
+cp "$c/0.3/beam/U" "$r/0.3/beam/U"
+sphVcpmFsi -case "$r" > "$scratch/log.restart" 2>&1
+check "restart: the run ends" grep -q '^End' "$scratch/log.restart"
+expectIn "restart: continues from 0.3" "$scratch/log.restart" "Reading time 0.3 "
+check "restart: 0.4 written" [ -f "$r/0.4/beam/U" ]
+
+# Near incompressibility (nu = 0.49999) the lattice damping of the
+# volumetric term sets the stable step, below C_s l0/c_p = l0/(2 c_p): the
+# solver takes it (docs/vcpm.md), and the run holds.
+n="$scratch/nearHalf"
+cp -r "$c" "$n"
+rm -rf "$n"/0.*
+sed -i 's/nu 0.3;/nu 0.49999;/' "$n/constant/solidProperties"
+sed -i 's/^endTime .*/endTime 5e-4;/; s/^writeInterval .*/writeInterval 5e-4;/' "$n/system/controlDict"
+sphVcpmFsi -case "$n" > "$scratch/log.nearHalf" 2>&1
+check "nu = 0.49999: the run ends" grep -q '^End' "$scratch/log.nearHalf"
+check "nu = 0.49999: the stable step is the damped bound, below l0/(2 c_p)" \
+    awk '/c_p = .* stable deltaT = / { cp = $3 + 0; dt = $(NF-1) + 0; found = 1 }
+         END { exit !(found && dt > 0 && dt < 0.5*0.5*0.01/cp) }' "$scratch/log.nearHalf"
+
 # The plain lattice: generateParticles warns with its thin-member error.
 off="$scratch/cantileverOff"
 mkdir -p "$off"

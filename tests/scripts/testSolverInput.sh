@@ -171,6 +171,18 @@ expectFatal "a blow-up" "blew up at time" "particle id [0-9]+ of body water" \
 t=$(sed -n 's/.*was written to \([^/]*\)\/.*/\1/p' "$scratch/c/log.solver" | head -1)
 check "the last good state $t/ exists and is complete" \
     [ -n "$t" -a -f "$scratch/c/$t/water/position" -a -f "$scratch/c/$t/uniform/time" ]
+# The same with a write after every step: the last good state is the
+# write just before the blow-up, named as such, not written again under a
+# name of raised precision.
+sed -i 's/^writeControl .*/writeControl timeStep;/; s/^writeInterval .*/writeInterval 1;/' \
+    "$scratch/c/system/controlDict"
+rm -rf "$scratch/c"/0.*
+expectFatal "a blow-up after a write" "blew up at time" "is the last write, [0-9.e-]+/"
+t=$(sed -n 's/.*is the last write, \([^/]*\)\/.*/\1/p' "$scratch/c/log.solver" | head -1)
+check "a blow-up after a write: $t/ exists and is complete" \
+    [ -n "$t" -a -f "$scratch/c/$t/water/position" -a -f "$scratch/c/$t/uniform/time" ]
+check "a blow-up after a write: no precision raised" \
+    bash -c "! grep -q 'Increased the timePrecision' '$scratch/c/log.solver'"
 
 # Particles leaving the domain: water thrown up out of the open tank of
 # hydrostaticTank2D past the domain's top is removed and counted, and the
@@ -188,5 +200,40 @@ expectIn "fluid crossing the domain bounds: removed and counted" "$scratch/c/log
     "^Removed [0-9]+ particles? of water that left the domain"
 expectIn "the run summary counts the removed particles" "$scratch/c/log.solver" \
     "water: [0-9]+ particles removed for leaving the domain"
+
+# A 3D case reads every vector with 3 components: a 2-component one (a
+# slip from a 2D case, read as z = 0) is an error naming the file.
+fresh3D()
+{
+    rm -rf "$scratch/c"
+    cp -r "$source" "$scratch/c"
+    sed -i 's/^nDimensions .*/nDimensions 3;/; s/^dp .*/dp 0.05;/; s/max (0.8 0.5 0)/max (0.8 0.5 0.2)/; s/max (0.2 0.4 0)/max (0.2 0.4 0.2)/' \
+        "$scratch/c/system/generateParticlesDict"
+    sed -i 's/^endTime .*/endTime 0.001;/' "$scratch/c/system/controlDict"
+    (cd "$scratch/c" && generateParticles > log.generateParticles 2>&1)
+}
+fresh3D
+check "3D: the case generates" [ -f "$scratch/c/0/water/position" ]
+(cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+check "3D: the case runs" grep -q '^End' "$scratch/c/log.solver"
+rm -rf "$scratch/c"/0.*
+sed -i 's/max (0.2 0.4 0.2)/max (0.2 0.4)/' "$scratch/c/system/generateParticlesDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1)
+check "3D: a 2-component vector in generateParticlesDict: exit status 1" [ $? -eq 1 ]
+expectIn "3D: a 2-component vector in generateParticlesDict: says so" \
+    "$scratch/c/log.generateParticles" "vector of 3 components \\(x y z\\) in a 3D case"
+expectIn "3D: a 2-component vector in generateParticlesDict: names the file" \
+    "$scratch/c/log.generateParticles" "system/generateParticlesDict"
+fresh3D
+printf 'FoamFile { class uniformDimensionedVectorField; object g; }\ndimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81);\n' \
+    > "$scratch/c/constant/g"
+expectFatal "3D: gravity of 2 components" "vector of 3 components \\(x y z\\) in a 3D case" "constant/g"
+rm "$scratch/c/constant/g"
+echo 'domain { min (-0.1 -0.1); max (1 1 1); }' >> "$scratch/c/system/sphSchemes"
+expectFatal "3D: a domain corner of 2 components" "vector of 3 components \\(x y z\\) in a 3D case" "system/sphSchemes"
+fresh3D
+sed -i 's/direction (1 0 0);/direction (1 0);/' "$scratch/c/system/controlDict"
+expectFatal "3D: a function object's direction of 2 components" \
+    "vector of 3 components \\(x y z\\) in a 3D case" "system/controlDict"
 
 finish

@@ -1,0 +1,124 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "startState.H"
+#include "dictionary.H"
+#include "error.H"
+#include "timeName.H"
+
+#include <algorithm>
+#include <ostream>
+
+namespace sphvcpm
+{
+
+namespace fs = std::filesystem;
+
+void clearInterruptedWrites(const fs::path& caseDir, std::ostream& log)
+{
+    for (const std::string& left : removeInterruptedWrites(caseDir))
+    {
+        log << "Removed " << left << ", left by an interrupted write\n";
+    }
+}
+
+
+void checkStartState(const fs::path& caseDir,
+                     const std::string& startTimeName,
+                     const std::vector<particleBody>& bodies,
+                     const timeState& state, const bool solidsAlone,
+                     std::ostream& log)
+{
+    const std::string dir = (caseDir/startTimeName).string();
+    const bool restart = state.index != 0;
+    for (const particleBody& b : bodies)
+    {
+        if (b.size() != 0) continue;
+        if (restart && b.type() == bodyType::fluid)
+        {
+            log << "    " << b.name() << " (fluid): no particles left (all"
+                   " have left the domain's bounds)\n";
+            continue;
+        }
+        fatalError("Body " + b.name() + " of " + dir + " has no particles"
+            " (its fields hold none): generateParticles never writes an"
+            " empty body, nor the solvers an empty "
+            + bodyTypeName(b.type()) + ", so the directory is damaged");
+    }
+    if (!restart)
+    {
+        double named = 0;
+        if (parseTimeName(startTimeName, named) && named != 0
+         && !fs::exists(caseDir/startTimeName/"uniform/time"))
+        {
+            warning("Time " + startTimeName + " has no uniform/time: it"
+                " starts as a fresh start (hydrostatic density; a solid's"
+                " reference lattice is its positions there). Every write of"
+                " the solvers has it: if this is one, it was damaged", dir);
+        }
+        return;
+    }
+
+    // A restart continues the state the solver wrote: every body of the
+    // initial time, with the fields that carry the state across steps.
+    // One missing would silently start again from a default. The initial
+    // time is the earliest directory (0/ of generateParticles, unless the
+    // case starts elsewhere); when the restart is the earliest left, there
+    // is nothing to compare with.
+    const std::vector<timeInstant> times = findTimes(caseDir);
+    const std::string initial =
+        times.empty() ? startTimeName : times.front().name;
+    std::vector<std::string> initialBodies;
+    if (initial != startTimeName)
+    {
+        for (const std::string& name : bodyNames(caseDir, initial))
+        {
+            const fs::path props = caseDir/initial/name/"bodyProperties";
+            if (fs::is_regular_file(props) && (!solidsAlone
+             || dictionary::fromFile(props).getWord("type",
+                    {"fluid", "wall", "solid"}) == "solid"))
+            {
+                initialBodies.push_back(name);
+            }
+        }
+    }
+    for (const std::string& name : initialBodies)
+    {
+        const bool found = std::any_of(bodies.begin(), bodies.end(),
+            [&](const particleBody& b) { return b.name() == name; });
+        if (!found)
+        {
+            fatalError("Body " + name + " of " + initial + "/ is missing"
+                " from the restart time " + dir + ": every write of the"
+                " solvers holds every body, so the directory is damaged");
+        }
+    }
+    for (const particleBody& b : bodies)
+    {
+        if (solidsAlone && b.type() != bodyType::solid) continue;
+        std::vector<std::string> needed{"U"};
+        if (b.type() == bodyType::solid)
+        {
+            if (!solidsAlone) needed.push_back("Umean");
+            if (fs::exists(caseDir/initial/b.name()/"clamped"))
+            {
+                needed.push_back("clamped");
+            }
+        }
+        else
+        {
+            needed.insert(needed.end(), {"rho", "mass"});
+        }
+        for (const std::string& field : needed)
+        {
+            if (!b.hasField(field))
+            {
+                fatalError("Field " + dir + "/" + b.name() + "/" + field
+                    + " is missing: a restart needs it (the solvers write"
+                    " it every time), so the directory is damaged");
+            }
+        }
+    }
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,111 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The write schedule of both solvers' loops (libsrc/core/timeControl.H):
+// write times as multiples of writeInterval from any start (negative ones
+// too), the name of a second write at one time, and the writeInterval
+// checks of each writeControl.
+
+#include "timeControl.H"
+#include "../testTools.H"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace sphvcpm;
+using test::catchFatal;
+using test::scratchDir;
+
+namespace
+{
+
+timeControl readControl(const scratchDir& dir, const std::string& entries)
+{
+    dir.write("system/controlDict",
+        "FoamFile { format ascii; class dictionary; object controlDict; }\n"
+        "endTime 1;\ndeltaT 0.001;\n" + entries);
+    return timeControl::read(dir.path());
+}
+
+// Runs the schedule from start to endTime with steps of at most dt, as the
+// solvers' loops do; returns the names written.
+std::vector<std::string> writtenNames(const timeControl& control,
+                                      double start, double dt)
+{
+    writeSchedule schedule(control, start);
+    std::vector<std::string> names;
+    double t = start;
+    label index = 0;
+    while (t < control.endTime*(1 - 1e-12))
+    {
+        const double step = schedule.limitStep(t, dt);
+        t = schedule.landed() ? schedule.landingTime() : t + step;
+        ++index;
+        if (schedule.due(t, index))
+        {
+            const std::string name = schedule.writeName(t);
+            names.push_back(name);
+            schedule.written(t, name, "", "");
+        }
+    }
+    return names;
+}
+
+} // End anonymous namespace
+
+
+TEST(writeSchedule, landsOnMultiplesOfTheIntervalFromANegativeStart)
+{
+    // A sum of intervals from -1 drifted: its zero was named -1.38778e-16.
+    scratchDir dir("schedule");
+    timeControl control = readControl(dir, "writeInterval 0.1;\n");
+    control.endTime = 0.3;
+    const std::vector<std::string> names = writtenNames(control, -1, 0.03);
+    const std::vector<std::string> expected{"-0.9", "-0.8", "-0.7", "-0.6",
+        "-0.5", "-0.4", "-0.3", "-0.2", "-0.1", "0", "0.1", "0.2", "0.3"};
+    EXPECT_EQ(names, expected);
+}
+
+
+TEST(writeSchedule, aSecondWriteAtTheSameTimeHasTheSameName)
+{
+    // The last good state of a run that blew up right after a write is
+    // that write: the same directory, not a new name at a raised precision.
+    scratchDir dir("schedule");
+    const timeControl control = readControl(dir, "writeInterval 0.1;\n");
+    writeSchedule schedule(control, 0);
+    const double t = 0.1 + 0.2;     // 0.30000000000000004
+    const std::string first = schedule.writeName(t);
+    schedule.written(t, first, "", "");
+    EXPECT_EQ(first, "0.3");
+    EXPECT_EQ(schedule.writeName(t), "0.3");
+    EXPECT_EQ(schedule.name(t), "0.3") << "the precision was raised";
+    EXPECT_EQ(schedule.lastWriteTime(), t);
+    EXPECT_EQ(schedule.lastWriteName(), "0.3");
+}
+
+
+TEST(writeSchedule, runTimeBelowTheStepWritesEveryStep)
+{
+    // runTime writes after the step that passes a write time: an interval
+    // far below the step writes every step, and moves on at once (no loop
+    // over the interval's multiples in between).
+    scratchDir dir("schedule");
+    timeControl control =
+        readControl(dir, "writeControl runTime;\nwriteInterval 1e-300;\n");
+    control.endTime = 0.01;
+    const std::vector<std::string> names = writtenNames(control, 0, 0.001);
+    ASSERT_EQ(names.size(), 10u);
+    EXPECT_EQ(names.front(), "0.001");
+    EXPECT_EQ(names.back(), "0.01");
+
+    // adjustableRunTime lands on each write time: below minDeltaT every
+    // step would be below the floor the run stops at.
+    const FatalError err = catchFatal([&]
+    {
+        readControl(dir, "writeInterval 1e-300;\n");
+    });
+    test::expectMessage(err, {"writeInterval 1e-300 s is below minDeltaT"});
+}
