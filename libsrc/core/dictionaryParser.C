@@ -161,8 +161,9 @@ std::string readWholeFile(const std::filesystem::path& file,
      && !std::filesystem::is_regular_file(status))
     {
         fatalIOError(errorFile, errorLine, "Cannot read " + what + " \""
-            + file.string() + "\": it is not a regular file (a FIFO, socket"
-            " or device)");
+            + file.string() + "\": it is "
+            + (std::filesystem::is_directory(status) ? "a directory"
+               : "not a regular file (a FIFO, socket or device)"));
     }
     std::ifstream is(file, std::ios::binary);
     if (!is)

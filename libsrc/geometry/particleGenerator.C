@@ -460,12 +460,15 @@ void particleGenerator::generate()
             }
         }
 
-        // The bodies of this type so far: two of one type must not
-        // overlap (two fluids filled into one box would put a particle
-        // on every particle of the other).
-        std::vector<vec3> sameType;
-        scalar sameTypeDp = 0;
-        std::string sameTypeNames;
+        // The bodies of this type so far, by spacing: two of one type
+        // must not overlap (two fluids filled into one box would put a
+        // particle on every particle of the other).
+        struct sameTypeBodies
+        {
+            std::vector<vec3> nodes;
+            std::string names;
+        };
+        std::map<scalar, sameTypeBodies> sameType;
         for (const bodySpec& spec : specs_)
         {
             if (spec.type != type)
@@ -477,22 +480,22 @@ void particleGenerator::generate()
             std::vector<vec3> nodes = lattice(spec.origin, spec.dp,
                 nDimensions_).fill(spec.shapes, what);
             const scalar cellVolume = std::pow(spec.dp, nDimensions_);
-            if (!sameType.empty())
+            for (const auto& [earlierDp, earlier] : sameType)
             {
-                const pointLocator earlier(sameType, dp_);
-                const scalar minDistance = 0.5*(spec.dp + sameTypeDp)
+                const pointLocator locator(earlier.nodes, dp_);
+                const scalar minDistance = 0.5*(spec.dp + earlierDp)
                     *(1 - overlapTolerance);
                 const std::size_t nOverlap = std::count_if(nodes.begin(),
                     nodes.end(), [&](const vec3& p)
-                    { return earlier.anyWithin(p, minDistance); });
+                    { return locator.anyWithin(p, minDistance); });
                 if (nOverlap)
                 {
                     std::ostringstream os;
                     os << "Body '" << spec.name << "' ("
                        << bodyTypeName(type) << ") overlaps the "
                        << bodyTypeName(type) << " bod"
-                       << (sameTypeNames.find(',') == std::string::npos
-                           ? "y " : "ies ") << sameTypeNames << ": "
+                       << (earlier.names.find(',') == std::string::npos
+                           ? "y " : "ies ") << earlier.names << ": "
                        << nOverlap << " of its lattice nodes lie within"
                        << " (dp + dp_o)/2 of their particles. Make it one"
                        << " body, or shape the two apart";
@@ -593,9 +596,9 @@ void particleGenerator::generate()
                 std::vector<vec3>& o = obstacles[spec.dp];
                 o.insert(o.end(), nodes.begin(), nodes.end());
             }
-            sameType.insert(sameType.end(), nodes.begin(), nodes.end());
-            sameTypeDp = std::max(sameTypeDp, spec.dp);
-            sameTypeNames += (sameTypeNames.empty() ? "" : ", ") + spec.name;
+            sameTypeBodies& group = sameType[spec.dp];
+            group.nodes.insert(group.nodes.end(), nodes.begin(), nodes.end());
+            group.names += (group.names.empty() ? "" : ", ") + spec.name;
             bodies_.push_back(std::move(body));
         }
     }

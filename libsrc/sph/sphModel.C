@@ -5,6 +5,7 @@
 #include "error.H"
 
 #include <cmath>
+#include <sstream>
 
 namespace sphvcpm
 {
@@ -278,8 +279,11 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
             const scalar v = dict.getDimensioned<scalar>(key, dims);
             if (!(v > 0))
             {
+                std::ostringstream found;
+                found << v;
                 dict.fatalAt(key, "Keyword '" + std::string(key)
-                    + "': expected a positive number");
+                    + "': expected a positive number, found "
+                    + found.str());
             }
             return v;
         };

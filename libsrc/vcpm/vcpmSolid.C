@@ -97,12 +97,14 @@ scalar vcpmSolid::stableTimeStep(const scalar Cs) const
     // The lattice damping lowers the stable bound 2/omega of the highest
     // mode (omega about 2 c_p/l0, against which C_s is set) to
     // (2/omega)(sqrt(1 + xi^2) - xi), xi = beta omega/2 its damping ratio
-    // there. C_s's margin of 2 covers that while xi < 3/4 (nu up to about
-    // 0.4998 at the default zeta); nearer 0.5 the volumetric term stiffens
-    // and damps the bonds far more, and the damped bound governs.
+    // there. The default C_s = 1/2 is a margin of 2 on the undamped bound,
+    // which covers that while xi < 3/4 (nu up to about 0.4998 at the
+    // default zeta); nearer 0.5 the volumetric term stiffens and damps the
+    // bonds far more, and the damped bound, with the same margin, governs.
     const scalar l0OverCp = material_.l0/material_.pWaveSpeed;
     const scalar xi = bondViscosity()/l0OverCp;
-    return std::min(Cs*l0OverCp, l0OverCp*(std::sqrt(1 + xi*xi) - xi));
+    return Cs*l0OverCp
+         *std::min<scalar>(1, 2*(std::sqrt(1 + xi*xi) - xi));
 }
 
 

@@ -303,6 +303,63 @@ TEST(particleGenerator, fluidOverlappingSolid)
 }
 
 
+TEST(particleGenerator, finerSolidsBesideACoarseOneDoNotOverlap)
+{
+    // Solids of one type are kept (dp + dp_o)/2 apart by their own
+    // spacings: two at dp/4, 5.5 mm apart between their nearest particles
+    // (beyond (dp/4 + dp/4)/2), are no overlap, with a solid at dp listed
+    // before them (its spacing gave (dp/4 + dp)/2 = 6.25 mm for both).
+    std::string dict = replaced(exampleDict,
+        R"(    gate
+    {
+        type        solid;
+        latticeOrigin (0.5 0 0);
+        shapes { plate { shape box; min (0.5 0 0); max (0.52 0.2 0); } }
+    })",
+        R"(    coarse
+    {
+        type        solid;
+        latticeOrigin (0.8 0 0);
+        shapes { plate { shape box; min (0.8 0 0); max (0.83 0.2 0); } }
+    }
+    left
+    {
+        type        solid;
+        dp          0.0025;
+        latticeOrigin (0.5 0 0);
+        shapes { plate { shape box; min (0.5 0 0); max (0.51 0.2 0); } }
+    }
+    right
+    {
+        type        solid;
+        dp          0.0025;
+        latticeOrigin (0.513 0 0);
+        shapes { plate { shape box; min (0.513 0 0); max (0.523 0.2 0); } }
+    })");
+    const std::string material = "{ rho 2700; E 1e9; nu 0.3; }\n";
+    testCase c(dict, fluidProperties, "coarse " + material + "left "
+        + material + "right " + material);
+    particleGenerator gen(c.path());
+    gen.generate();
+    const scalar gap = minDistance(bodyNamed(gen, "left"),
+                                   bodyNamed(gen, "right"));
+    EXPECT_NEAR(gap, 0.0055, 1e-9);
+
+    // Nearer than their own (dp/4 + dp/4)/2 they do overlap.
+    const std::string near = replaced(replaced(dict,
+        "latticeOrigin (0.513 0 0);", "latticeOrigin (0.5095 0 0);"),
+        "min (0.513 0 0); max (0.523 0.2 0);",
+        "min (0.5095 0 0); max (0.5195 0.2 0);");
+    testCase overlapping(near, fluidProperties, "coarse " + material
+        + "left " + material + "right " + material);
+    const FatalError err = catchFatal([&]
+    {
+        particleGenerator(overlapping.path()).generate();
+    });
+    expectMessage(err, {"Body 'right' (solid) overlaps the solid body left:"});
+}
+
+
 TEST(particleGenerator, threeDimensionalTank)
 {
     // Exact double values or digits of geometry (single: float rounding).
