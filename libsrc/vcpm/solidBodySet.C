@@ -298,7 +298,9 @@ std::string solidBodySet::firstCollapsed(const scalar fraction,
            << " at (" << x[i].x << " " << x[i].y << " " << x[i].z
            << ") and id " << b.id[j] << " at (" << x[j].x << " " << x[j].y
            << " " << x[j].z << ") is " << mag(x[j] - x[i])/bonds.length[k]
-           << " of its rest length " << bonds.length[k] << " m";
+           << " of its rest length " << bonds.length[k] << " m; E = "
+           << b.solid->material().E << " Pa, latticeDamping "
+           << b.solid->latticeDamping;
         return os.str();
     }
     return {};

@@ -11,7 +11,8 @@
 # of it), no fluid particle removed, the fluid's mechanical energy never
 # above its start by more than 1 % (the solid takes energy, it must not
 # give more), and the plate's largest displacement below its height (a
-# bounded response).
+# bounded response). A plate far too soft for its load must stop with the
+# collapse diagnosis and a restorable last good state.
 . "$(dirname "$0")/testLib.sh"
 . "$(dirname "$0")/fieldTools.sh"
 
@@ -111,4 +112,37 @@ makeCase thinPlate 1e7 0.3 1000 0.03 0.15 no
 checkCase thinPlate 0.15
 makeCase fastJet 1e7 0.3 1000 0.04 0.3 yes
 checkCase fastJet 0.3
+
+# A plate far too soft for its load (E = 10 Pa: its own weight and the
+# water's pressure are kPa) and without lattice damping collapses: the run
+# stops in the solid's sub-cycle naming the solid, its E and the bond, and
+# writes the state at the start of that step, solids included (restored
+# from the step's start: no bond of it is near collapse, nothing in it is
+# non-finite).
+makeCase crushedPlate 10 0.3 1000 0.04 0.15 no
+sed -i 's/plane planeStrain;/plane planeStrain; latticeDamping 0;/' \
+    "$scratch/crushedPlate/constant/solidProperties"
+c="$scratch/crushedPlate"
+(cd "$c" && generateParticles > log.generateParticles 2>&1 \
+         && timeout 300 sphVcpmFsi > log.sphVcpmFsi 2>&1)
+check "crushedPlate: exit status 1" [ $? -eq 1 ]
+expectIn "crushedPlate: the diagnosis names the solid, its E and the bond" \
+    "$c/log.sphVcpmFsi" "collapsing lattice \\(solid plate: the bond of particles id [0-9]+ .* is 0\\.2[0-9]* of its rest length 0\\.01 m; E = 10 Pa, latticeDamping 0\\)"
+t=$(sed -n 's/.*was written to \([^/]*\)\/.*/\1/p' "$c/log.sphVcpmFsi" | head -1)
+check "crushedPlate: the last good state ${t:-?}/ written" [ -n "$t" -a -f "$c/$t/plate/position" ]
+check "crushedPlate: its state is finite and the plate's particles are more than dp/4 apart" \
+python3 - "$c/$t" <<'PY'
+import math, re, sys
+d = sys.argv[1]
+def vec(f):
+    t = open(f).read(); t = t[t.index('value'):]
+    return [tuple(map(float, m)) for m in re.findall(
+        r'^\(([^ ()]+) ([^ ()]+) ([^ ()]+)\)$', t, re.M)]
+w = vec(d + '/water/position'); s = vec(d + '/plate/position')
+if not s or any(not all(map(math.isfinite, p)) for p in w + s):
+    print("    non-finite state"); sys.exit(1)
+closest = min(math.dist(p, q) for i, p in enumerate(s) for q in s[i + 1:])
+print("    closest plate particles %.4g m apart" % closest)
+sys.exit(0 if closest > 0.25*0.01 else 1)
+PY
 finish
