@@ -100,6 +100,30 @@ check "restart: the run ends" grep -q '^End' "$scratch/log.restart"
 expectIn "restart: continues from 0.3" "$scratch/log.restart" "Reading time 0.3 "
 check "restart: 0.4 written" [ -f "$r/0.4/beam/U" ]
 
+# A bad material in constant/solidProperties: an error naming the file,
+# the keyword and the solid, exit 1.
+badMaterial()   # badMaterial <what> <sed expression> <pattern>
+{
+    local b="$scratch/badMaterial"
+    rm -rf "$b"; cp -r "$c" "$b"; rm -rf "$b"/0.*
+    sed -i "$2" "$b/constant/solidProperties"
+    sphVcpmFsi -case "$b" > "$scratch/log.badMaterial" 2>&1
+    check "$1: exit status 1" [ $? -eq 1 ]
+    expectIn "$1: says what is wrong" "$scratch/log.badMaterial" "$3"
+    expectIn "$1: names the file" "$scratch/log.badMaterial" "constant/solidProperties"
+}
+badMaterial "damping -1" 's/damping 60;/damping -1;/' \
+    "Keyword 'damping' of solid 'beam': the mass-proportional damping \\(1/s\\) must be >= 0"
+badMaterial "latticeDamping 0.5" 's/damping 60;/damping 60; latticeDamping 0.5;/' \
+    "Keyword 'latticeDamping' of solid 'beam': the damping ratio .* must be in \\[0, 0.2\\]"
+badMaterial "no entry for the solid" 's/^beam /plate /' "Keyword 'beam' is undefined"
+rm -rf "$scratch/badMaterial"; cp -r "$c" "$scratch/badMaterial"; rm -rf "$scratch/badMaterial"/0.*
+rm "$scratch/badMaterial/constant/solidProperties"
+sphVcpmFsi -case "$scratch/badMaterial" > "$scratch/log.badMaterial" 2>&1
+check "no solidProperties: exit status 1" [ $? -eq 1 ]
+expectIn "no solidProperties: says what it must give" "$scratch/log.badMaterial" \
+    "Solid beam: .*constant/solidProperties does not exist; it gives the material as beam \\{ E ...; nu ...; \\}"
+
 # Near incompressibility (nu = 0.49999) the lattice damping of the
 # volumetric term sets the stable step, below C_s l0/c_p = l0/(2 c_p): the
 # solver takes it (docs/vcpm.md), and the run holds.

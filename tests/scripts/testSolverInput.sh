@@ -227,6 +227,14 @@ expectIn "fluid crossing the domain bounds: removed and counted" "$scratch/c/log
 expectIn "the run summary counts the removed particles" "$scratch/c/log.solver" \
     "water: [0-9]+ particles removed for leaving the domain"
 
+# A domain that leaves out wall particles: an error naming the particle
+# and the domain (a wall is never removed, as fluid leaving is).
+fresh
+echo 'domain { min (0.05 -0.1 0); max (1 1 0); }' >> "$scratch/c/system/sphSchemes"
+expectFatal "a domain without some walls" \
+    "Wall particle id [0-9]+ of body box at .* lies outside the domain bounds" \
+    "enlarge the domain of system/sphSchemes"
+
 # A 3D case reads every vector with 3 components: a 2-component one (a
 # slip from a 2D case, read as z = 0) is an error naming the file.
 fresh3D()
