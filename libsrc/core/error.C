@@ -1,6 +1,8 @@
 #include "error.H"
 
+#include <csignal>
 #include <iostream>
+#include <new>
 #include <sstream>
 
 namespace sphvcpm
@@ -78,6 +80,10 @@ void warning(const std::string& message, const std::string& file, int line)
 
 int runGuarded(const std::function<int()>& body)
 {
+    // Past a file-size limit (ulimit -f) a write then fails with EFBIG,
+    // which the writers report naming the file, instead of the signal
+    // killing the process without a word.
+    std::signal(SIGXFSZ, SIG_IGN);
     try
     {
         return body();
@@ -86,6 +92,14 @@ int runGuarded(const std::function<int()>& body)
     {
         std::cout.flush();
         std::cerr << err.report() << "\nSPHVCPM exiting\n" << std::endl;
+    }
+    catch (const std::bad_alloc&)
+    {
+        std::cout.flush();
+        std::cerr << "\n--> SPHVCPM FATAL ERROR:\nOut of memory: the case"
+                     " needs more memory than this machine gives (fewer"
+                     " particles, a coarser dp or a smaller domain need"
+                     " less)\n\nSPHVCPM exiting\n" << std::endl;
     }
     catch (const std::exception& err)
     {

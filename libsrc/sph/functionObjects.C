@@ -8,7 +8,9 @@
 #include "withKernel.H"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <ostream>
 #include <sstream>
@@ -187,6 +189,7 @@ void table::sample(const solverSnapshot& s)
 {
     const std::vector<scalar> row = values(s);
     std::ofstream& os = output(file_);
+    errno = 0;
     if (!headerWritten_)
     {
         writeHeader(os);
@@ -201,8 +204,10 @@ void table::sample(const solverSnapshot& s)
     os.flush();
     if (!os)
     {
+        // The stream keeps no reason; errno has the failed write's.
         fatalError("Function object '" + name() + "': cannot write "
-            + file_ + " (disk full?)");
+            + outputPath(file_).string() + ": "
+            + (errno ? std::strerror(errno) : "the stream failed"));
     }
 }
 
