@@ -145,6 +145,32 @@ expectIn "c0 from an initial speed: the log names the particle" "$scratch/c/log.
 # Dimensions written must be the quantity's: a density's on nu is a slip.
 fresh; sed -i 's/^nu .*/nu [1 -3 0 0 0 0 0] 1e-06;/' "$scratch/c/constant/fluidProperties"
 expectFatal "nu with a density's dimensions" "constant/fluidProperties" "nu" "\\[0 2 -1 0 0 0 0\\]"
+# Values outside their ranges: an error naming the file and the keyword.
+fresh; sed -i 's/^hOverDp .*/hOverDp 5;/' "$scratch/c/system/sphSchemes"
+expectFatal "hOverDp 5" "system/sphSchemes" "hOverDp 5.* is outside the usable range \\[0.9, 3\\]"
+fresh; echo "cellDivisor 7;" >> "$scratch/c/system/sphSchemes"
+expectFatal "cellDivisor 7" "system/sphSchemes" "cellDivisor must be 1, 2, 3 or 4"
+fresh; sed -i 's/delta 0.1;/delta 2;/' "$scratch/c/system/sphSchemes"
+expectFatal "density diffusion delta 2" "system/sphSchemes" "delta must be in \\[0, 1\\]"
+fresh; sed -i 's/^nu .*/nu -1e-6;/' "$scratch/c/constant/fluidProperties"
+expectFatal "nu < 0" "constant/fluidProperties" "the kinematic viscosity nu must be >= 0"
+fresh; sed -i 's/^gamma .*/gamma 0.5;/' "$scratch/c/constant/fluidProperties"
+expectFatal "gamma 0.5" "constant/fluidProperties" "the Tait exponent gamma must be >= 1"
+fresh; printf 'FoamFile { class uniformDimensionedVectorField; object g; }\ndimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81 1);\n' \
+    > "$scratch/c/constant/g"
+expectFatal "gravity out of a 2D case's plane" "constant/g" "gravity must have z = 0"
+fresh; sed -i 's/^ *front .*/&\n    p0 { type probes; fields (); probeLocations ((0.1 0.1 0)); }/' \
+    "$scratch/c/system/controlDict"
+expectFatal "probes of no field" "system/controlDict" "Function object 'p0': fields is empty"
+fresh; sed -i 's/^ *front .*/&\n    tip { type solidPoints; body gate; points ((0.5 0.1 0)); }/' \
+    "$scratch/c/system/controlDict"
+expectFatal "solidPoints of no solid" "system/controlDict" "there is no solid body 'gate'"
+# The short form of a selection takes its defaults.
+fresh; sed -i 's/^shifting .*/shifting fickian;/' "$scratch/c/system/sphSchemes"
+(cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+check "shifting fickian; (short form): the run ends" grep -q '^End' "$scratch/c/log.solver"
+expectIn "shifting fickian; (short form): the log says so" "$scratch/c/log.solver" "shifting fickian"
+
 # A dictionary that is a FIFO is refused rather than waited on; a missing
 # ';' after application no longer swallows the entry that follows.
 fresh; rm "$scratch/c/system/sphSchemes"; mkfifo "$scratch/c/system/sphSchemes"
