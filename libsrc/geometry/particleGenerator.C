@@ -477,8 +477,19 @@ void particleGenerator::generate()
             }
             const std::string what =
                 "body '" + spec.name + "' (" + bodyTypeName(type) + ")";
-            std::vector<vec3> nodes = lattice(spec.origin, spec.dp,
-                nDimensions_).fill(spec.shapes, what);
+            std::vector<vec3> nodes;
+            try
+            {
+                nodes = lattice(spec.origin, spec.dp, nDimensions_)
+                    .fill(spec.shapes, what);
+            }
+            catch (const FatalError& err)
+            {
+                // The lattice knows the body, not where it is written (an
+                // STL's own errors name the STL).
+                if (err.isIOError()) throw;
+                fatalIOError(spec.file, spec.line, err.message(), spec.name);
+            }
             const scalar cellVolume = std::pow(spec.dp, nDimensions_);
             for (const auto& [earlierDp, earlier] : sameType)
             {
