@@ -130,15 +130,12 @@ expectIn "crushedPlate: the diagnosis names the solid, its E and the bond" \
     "$c/log.sphVcpmFsi" "collapsing lattice \\(solid plate: the bond of particles id [0-9]+ .* is 0\\.2[0-9]* of its rest length 0\\.01 m; E = 10 Pa, latticeDamping 0\\)"
 t=$(sed -n 's/.*was written to \([^/]*\)\/.*/\1/p' "$c/log.sphVcpmFsi" | head -1)
 check "crushedPlate: the last good state ${t:-?}/ written" [ -n "$t" -a -f "$c/$t/plate/position" ]
+fieldValues "$c/$t/plate/position" > "$scratch/plate.xyz"
+fieldValues "$c/$t/water/position" > "$scratch/water.xyz"
 check "crushedPlate: its state is finite and the plate's particles are more than dp/4 apart" \
-python3 - "$c/$t" <<'PY'
-import math, re, sys
-d = sys.argv[1]
-def vec(f):
-    t = open(f).read(); t = t[t.index('value'):]
-    return [tuple(map(float, m)) for m in re.findall(
-        r'^\(([^ ()]+) ([^ ()]+) ([^ ()]+)\)$', t, re.M)]
-w = vec(d + '/water/position'); s = vec(d + '/plate/position')
+python3 - "$scratch/plate.xyz" "$scratch/water.xyz" <<'PY'
+import math, sys
+s, w = ([tuple(map(float, l.split())) for l in open(f)] for f in sys.argv[1:3])
 if not s or any(not all(map(math.isfinite, p)) for p in w + s):
     print("    non-finite state"); sys.exit(1)
 closest = min(math.dist(p, q) for i, p in enumerate(s) for q in s[i + 1:])
