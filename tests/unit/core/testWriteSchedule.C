@@ -3,14 +3,17 @@
 \*---------------------------------------------------------------------------*/
 // The write schedule of both solvers' loops (libsrc/core/timeControl.H):
 // write times as multiples of writeInterval from any start (negative ones
-// too), the name of a second write at one time, and the writeInterval
-// checks of each writeControl.
+// too), the name of a second write at one time, purgeWrite, the
+// writeInterval checks of each writeControl and the range checks of
+// controlDict's other entries.
 
 #include "timeControl.H"
 #include "../testTools.H"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -108,4 +111,58 @@ TEST(writeSchedule, runTimeBelowTheStepWritesEveryStep)
         readControl(dir, "writeInterval 1e-300;\n");
     });
     test::expectMessage(err, {"writeInterval 1e-300 s is below minDeltaT"});
+}
+
+
+TEST(timeControl, outOfRangeEntriesAreErrorsNamingTheKeyword)
+{
+    scratchDir dir("schedule");
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"writeControl timeStep;\nwriteInterval 2.5;\n",
+         "a whole number of steps as writeInterval"},
+        {"writeInterval 0.1;\npurgeWrite -1;\n", "purgeWrite must be >= 0"},
+        {"writeInterval 0.1;\nwritePrecision 0;\n",
+         "writePrecision must be in [1, 17]"},
+        {"writeInterval 0.1;\ntimePrecision 18;\n",
+         "timePrecision must be in [1, 17]"},
+        {"writeInterval 0.1;\nlogInterval 0;\n", "logInterval must be >= 1"}};
+    for (const auto& [entries, message] : cases)
+    {
+        SCOPED_TRACE(entries);
+        const FatalError err = catchFatal([&, e = entries]
+        {
+            readControl(dir, e);
+        });
+        test::expectMessage(err, {message});
+        EXPECT_EQ(err.file(), (dir.path()/"system/controlDict").string());
+        EXPECT_GT(err.line(), 0);
+    }
+}
+
+
+TEST(writeSchedule, purgeWriteKeepsTheLastWritesAndTheStart)
+{
+    // purgeWrite 2: of the writes, only the last two stay; the start time
+    // is never removed (a restart from it keeps its input).
+    scratchDir dir("schedule");
+    timeControl control =
+        readControl(dir, "writeInterval 0.1;\npurgeWrite 2;\n");
+    control.endTime = 0.5;
+    writeSchedule schedule(control, 0);
+    std::filesystem::create_directories(dir.path()/"0");
+    for (const std::string name : {"0.1", "0.2", "0.3", "0.4", "0.5"})
+    {
+        std::filesystem::create_directories(dir.path()/name);
+        schedule.written(std::stod(name), name, dir.path(), "0");
+    }
+    std::vector<std::string> left;
+    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+    {
+        if (e.path().filename() != "system")
+        {
+            left.push_back(e.path().filename().string());
+        }
+    }
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, (std::vector<std::string>{"0", "0.4", "0.5"}));
 }
