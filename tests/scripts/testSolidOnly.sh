@@ -99,6 +99,21 @@ sphVcpmFsi -case "$r" > "$scratch/log.restart" 2>&1
 check "restart: the run ends" grep -q '^End' "$scratch/log.restart"
 expectIn "restart: continues from 0.3" "$scratch/log.restart" "Reading time 0.3 "
 check "restart: 0.4 written" [ -f "$r/0.4/beam/U" ]
+# The reference lattice of a restart is 0/: without it, or with a particle
+# it does not hold, an error saying so.
+rm -rf "$r/0.4"
+mv "$r/0" "$r/0.archived"
+sphVcpmFsi -case "$r" > "$scratch/log.noZero" 2>&1
+check "restart without 0/: exit status 1" [ $? -eq 1 ]
+expectIn "restart without 0/: says why 0/ is needed" "$scratch/log.noZero" \
+    "Restart from time 0.3 needs 0/, the reference lattice of the solids' bonds"
+mv "$r/0.archived" "$r/0"
+awk '/^\($/ { inList = 1; print; next } inList && !done { print 99999; done = 1; next } { print }' \
+    "$c/0.3/beam/id" > "$r/0.3/beam/id"
+sphVcpmFsi -case "$r" > "$scratch/log.badId" 2>&1
+check "restart with a particle not in 0/: exit status 1" [ $? -eq 1 ]
+expectIn "restart with a particle not in 0/: names it" "$scratch/log.badId" \
+    "Solid beam: particle id 99999 of time 0.3 is not in 0/beam"
 
 # A bad material in constant/solidProperties: an error naming the file,
 # the keyword and the solid, exit 1.
