@@ -131,7 +131,15 @@ writeSchedule::writeSchedule(const timeControl& control,
     precision_(control.timePrecision),
     lastName_(timeName(startTime, control.format, control.timePrecision)),
     lastTime_(startTime)
-{}
+{
+    if (!std::isfinite(next_))
+    {
+        // startTime/writeInterval overflows (runTime with a subnormal
+        // interval): a write after each step, as written() goes on.
+        next_ = startTime
+              + std::max(control.writeInterval, 2e-12*std::abs(startTime));
+    }
+}
 
 
 namespace
@@ -210,10 +218,10 @@ void writeSchedule::written(const double time, const std::string& name,
         nextIndex_ += 1;
         next_ = nextIndex_*interval;
     }
-    if (reached(time, next_))
+    if (!std::isfinite(next_) || reached(time, next_))
     {
         // An interval below the round-off of the time (the index no longer
-        // counts in ones): the write after the next step.
+        // counts in ones, or overflows): the write after the next step.
         next_ = time + std::max(interval, 2e-12*std::abs(time));
         nextIndex_ = next_/interval;
     }

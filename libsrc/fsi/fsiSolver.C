@@ -443,7 +443,9 @@ void fsiSolver::setSoundSpeed()
             fastest = i;
         }
     }
-    fluidHeight_ = gMag > 0 ? hi - lo + model_.dp : 0;
+    // No fluid particle (all left the domain before this restart): no
+    // height, and nothing for the checks below to weigh.
+    fluidHeight_ = gMag > 0 && hi >= lo ? hi - lo + model_.dp : 0;
 
     const std::string file = (caseDir_/"constant/fluidProperties").string();
     const bool speedGiven = model_.speedSystem > 0;

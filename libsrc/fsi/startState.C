@@ -56,6 +56,24 @@ void checkStartState(const fs::path& caseDir,
                 " reference lattice is its positions there). Every write of"
                 " the solvers has it: if this is one, it was damaged", dir);
         }
+        // Another initial state after this one (a case started at -1 with
+        // generateParticles' 0/ still there) would be written over when
+        // the run reaches its time, and a restart would take it for the
+        // solids' reference lattice.
+        bool after = false;
+        for (const timeInstant& t : findTimes(caseDir))
+        {
+            after = after || t.name == startTimeName;
+            if (!after || t.name == startTimeName) continue;
+            if (readTimeState(caseDir, t.name).index == 0)
+            {
+                fatalError("Time " + t.name + " of " + caseDir.string()
+                    + " is an initial state too (index 0: no solver wrote"
+                    " it), after the start time " + startTimeName + ": the"
+                    " run would write over it on reaching it. Move it out"
+                    " of the case, or start from it");
+            }
+        }
         return;
     }
 
@@ -65,9 +83,8 @@ void checkStartState(const fs::path& caseDir,
     // time is the earliest directory (0/ of generateParticles, unless the
     // case starts elsewhere); when the restart is the earliest left, there
     // is nothing to compare with.
-    const std::vector<timeInstant> times = findTimes(caseDir);
-    const std::string initial =
-        times.empty() ? startTimeName : times.front().name;
+    std::string initial = initialTimeName(caseDir);
+    if (initial.empty()) initial = startTimeName;
     std::vector<std::string> initialBodies;
     if (initial != startTimeName)
     {

@@ -255,6 +255,13 @@ std::vector<timeInstant> findTimes(const fs::path& caseDir)
 }
 
 
+std::string initialTimeName(const fs::path& caseDir)
+{
+    const std::vector<timeInstant> times = findTimes(caseDir);
+    return times.empty() ? std::string() : times.front().name;
+}
+
+
 // * * * * * * * * * * * * * * * * * Writing * * * * * * * * * * * * * * * //
 
 void writeTimeDirectory(const fs::path& caseDir, const timeState& state,

@@ -81,16 +81,25 @@ solidBodySet::solidBodySet
     }
     const dictionary solidProperties = dictionary::fromFile(file);
 
-    // The reference lattice: the start itself, or 0/ on a restart.
+    // The reference lattice: the start itself, or on a restart the initial
+    // time (index 0; 0/ of generateParticles unless the case starts
+    // elsewhere). Not "0" by name: a run started at -1 writes its t = 0
+    // there, deformed.
     std::vector<particleBody> zero;
+    const std::string initial = initialTimeName(caseDir_);
     if (!freshStart)
     {
-        if (!fs::is_directory(caseDir_/"0"))
+        if (initial.empty() || initial == startTimeName
+         || readTimeState(caseDir_, initial).index != 0)
         {
-            fatalError("Restart from time " + startTimeName + " needs 0/,"
-                " the reference lattice of the solids' bonds");
+            fatalError("Restart from time " + startTimeName + " needs the"
+                " initial time (index 0, as the 0/ of generateParticles),"
+                " the reference lattice of the solids' bonds; the earliest"
+                " time of the case, " + (initial.empty() ? "none" : initial)
+                + ", is not one");
         }
-        zero = readTimeDirectory(caseDir_, "0");
+        zero = readTimeDirectory(caseDir_, initial);
+        log << "    the solids' reference lattice: time " << initial << "\n";
     }
 
     for (const particleBody& b : start)
@@ -113,8 +122,9 @@ solidBodySet::solidBodySet
                 [&](const particleBody& z) { return z.name() == b.name(); });
             if (it == zero.end())
             {
-                fatalError("Solid " + b.name() + " is not in 0/: a restart"
-                    " takes its reference lattice from 0/" + b.name());
+                fatalError("Solid " + b.name() + " is not in " + initial
+                    + "/: a restart takes its reference lattice from "
+                    + initial + "/" + b.name());
             }
             std::map<label, label> index;
             for (label i = 0; i < it->size(); ++i) index[it->id()[i]] = i;
@@ -125,7 +135,8 @@ solidBodySet::solidBodySet
                 {
                     fatalError("Solid " + b.name() + ": particle id "
                         + std::to_string(b.id()[i]) + " of time "
-                        + startTimeName + " is not in 0/" + b.name());
+                        + startTimeName + " is not in " + initial + "/"
+                        + b.name());
                 }
                 reference[i] = it->position()[k->second];
             }

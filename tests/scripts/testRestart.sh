@@ -173,16 +173,23 @@ cp -r "$scratch/fsiHalves/0.32" "$c/0.32"
 # stops the run naming the file and the reason, not killed by SIGXFSZ
 # without a word; the time it was writing is not left half written, and a
 # run without the limit starts again from the last complete time.
+# limited <blocks> <log> <application>: runs it in $c under a file-size
+# limit of that many KiB; its log is written by cat, outside the limit.
+limited()
+{
+    (cd "$c" && ulimit -f "$1" && exec "$3") 2>&1 | cat > "$c/$2"
+    return "${PIPESTATUS[0]}"
+}
 c="$scratch/fileLimit"
 cp -r "$source" "$c"
 setEnd "$c" 0.02
 (cd "$c" && generateParticles > log.generateParticles 2>&1)
-(cd "$c" && ulimit -f 2 && sphVcpmFsi > log.limited 2>&1)
+limited 2 log.limited sphVcpmFsi
 check "file-size limit, function object: exit status 1" [ $? -eq 1 ]
 expectIn "file-size limit, function object: names the file and the reason" "$c/log.limited" \
     "Function object '[a-zA-Z]+': cannot write .*postProcessing/.*\\.dat: File too large"
 sed -i '/^functions/,$d' "$c/system/controlDict"
-(cd "$c" && ulimit -f 10 && sphVcpmFsi > log.limited 2>&1)
+limited 10 log.limited sphVcpmFsi
 check "file-size limit, fields: exit status 1" [ $? -eq 1 ]
 expectIn "file-size limit, fields: names the file and the reason" "$c/log.limited" \
     "Error writing .*/\\.0\\.02\\.tmp\\.[0-9]+/[a-z]+/[A-Za-z]+.: File too large"
@@ -190,7 +197,7 @@ check "file-size limit: no time half written" [ "$(cd "$c" && ls -A | grep -c '^
 (cd "$c" && sphVcpmFsi > log.sphVcpmFsi 2>&1)
 check "file-size limit lifted: the run ends" grep -q '^End' "$c/log.sphVcpmFsi"
 check "file-size limit lifted: 0.02 written" [ -f "$c/0.02/water/position" ]
-(cd "$c" && ulimit -f 2 && particlesToVTK > log.vtkLimited 2>&1)
+limited 2 log.vtkLimited particlesToVTK
 check "file-size limit, particlesToVTK: exit status 1" [ $? -eq 1 ]
 expectIn "file-size limit, particlesToVTK: names the file and the reason" "$c/log.vtkLimited" \
     "Error writing .*VTK/.*: File too large"

@@ -106,7 +106,7 @@ mv "$r/0" "$r/0.archived"
 sphVcpmFsi -case "$r" > "$scratch/log.noZero" 2>&1
 check "restart without 0/: exit status 1" [ $? -eq 1 ]
 expectIn "restart without 0/: says why 0/ is needed" "$scratch/log.noZero" \
-    "Restart from time 0.3 needs 0/, the reference lattice of the solids' bonds"
+    "Restart from time 0.3 needs the initial time \\(index 0, as the 0/ of generateParticles\\), the reference lattice of the solids' bonds; the earliest time of the case, 0.1, is not one"
 mv "$r/0.archived" "$r/0"
 awk '/^\($/ { inList = 1; print; next } inList && !done { print 99999; done = 1; next } { print }' \
     "$c/0.3/beam/id" > "$r/0.3/beam/id"
@@ -114,6 +114,31 @@ sphVcpmFsi -case "$r" > "$scratch/log.badId" 2>&1
 check "restart with a particle not in 0/: exit status 1" [ $? -eq 1 ]
 expectIn "restart with a particle not in 0/: names it" "$scratch/log.badId" \
     "Solid beam: particle id 99999 of time 0.3 is not in 0/beam"
+
+# A case started before 0 (the initial state in -0.1/, index 0): a 0/ of
+# generateParticles still there would be written over at t = 0, so the
+# fresh start is refused; without it the run writes its own 0/, and a
+# restart takes the solids' reference lattice from -0.1/, not from that 0/.
+n="$scratch/negativeStart"
+cp -r "$c" "$n"; rm -rf "$n"/0.*
+cp -r "$n/0" "$n/-0.1"
+sed -i 's/^value .*/value           -0.1;/' "$n/-0.1/uniform/time"
+sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 0.1;/' "$n/system/controlDict"
+sed -i 's/^startFrom .*/startFrom startTime;/; s/^startTime .*/startTime -0.1;/' "$n/system/controlDict"
+sphVcpmFsi -case "$n" > "$scratch/log.negative" 2>&1
+check "start at -0.1 with 0/ of generateParticles: exit status 1" [ $? -eq 1 ]
+expectIn "start at -0.1 with 0/ of generateParticles: says why" "$scratch/log.negative" \
+    "Time 0 of .* is an initial state too \\(index 0: no solver wrote it\\), after the start time -0.1"
+rm -rf "$n/0"
+sphVcpmFsi -case "$n" > "$scratch/log.negative" 2>&1
+check "start at -0.1: the run ends" grep -q '^End' "$scratch/log.negative"
+check "start at -0.1: 0/ written by the solver (index > 0)" \
+    awk '$1 == "index" { sub(";", "", $2); found = $2 > 0 } END { exit !found }' "$n/0/uniform/time"
+sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 0.15;/' "$n/system/controlDict"
+sphVcpmFsi -case "$n" > "$scratch/log.negativeRestart" 2>&1
+check "restart after a start at -0.1: the run ends" grep -q '^End' "$scratch/log.negativeRestart"
+expectIn "restart after a start at -0.1: the reference lattice is -0.1/" \
+    "$scratch/log.negativeRestart" "the solids' reference lattice: time -0.1$"
 
 # A bad material in constant/solidProperties: an error naming the file,
 # the keyword and the solid, exit 1.

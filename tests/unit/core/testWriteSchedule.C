@@ -104,6 +104,16 @@ TEST(writeSchedule, runTimeBelowTheStepWritesEveryStep)
     EXPECT_EQ(names.front(), "0.001");
     EXPECT_EQ(names.back(), "0.01");
 
+    // From t = 1 the interval's count overflows (1/1e-310): still every
+    // step, not never.
+    timeControl subnormal =
+        readControl(dir, "writeControl runTime;\nwriteInterval 1e-310;\n");
+    subnormal.endTime = 1.01;
+    const std::vector<std::string> late = writtenNames(subnormal, 1, 0.001);
+    ASSERT_EQ(late.size(), 10u);
+    EXPECT_EQ(late.front(), "1.001");
+    EXPECT_EQ(late.back(), "1.01");
+
     // adjustableRunTime lands on each write time: below minDeltaT every
     // step would be below the floor the run stops at.
     const FatalError err = catchFatal([&]
