@@ -60,11 +60,9 @@ void checkStartState(const fs::path& caseDir,
         // generateParticles' 0/ still there) would be written over when
         // the run reaches its time, and a restart would take it for the
         // solids' reference lattice.
-        bool after = false;
         for (const timeInstant& t : findTimes(caseDir))
         {
-            after = after || t.name == startTimeName;
-            if (!after || t.name == startTimeName) continue;
+            if (t.value <= state.value) continue;
             if (readTimeState(caseDir, t.name).index == 0)
             {
                 fatalError("Time " + t.name + " of " + caseDir.string()
