@@ -37,12 +37,10 @@ constexpr double verletTestedDelta = 0.1;
 
 const std::string verletTestedLimits = "verletSteps <= "
     + std::to_string(verletTestedSteps) + ", maxCo <= "
-    + fsiFormat::str(verletTestedMaxCo) + " (adjustTimeStep yes) and delta <= "
-    + fsiFormat::str(verletTestedDelta);
+    + str(verletTestedMaxCo) + " (adjustTimeStep yes) and delta <= "
+    + str(verletTestedDelta);
 
 } // End anonymous namespace
-
-using fsiFormat::str;
 
 
 // * * * * * * * * * * * * * * * * Construction * * * * * * * * * * * * * * //

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 #include "functionObjects.H"
 #include "error.H"
+#include "formatting.H"
 #include "fluidInteractions.H"
 #include "parallel.H"
 #include "withKernel.H"
@@ -37,22 +38,6 @@ std::vector<std::string> keywords(std::vector<std::string> own)
     return own;
 }
 
-// (x y z)
-std::string str(const vec3& v)
-{
-    std::ostringstream os;
-    os.precision(10);
-    os << '(' << v.x << ' ' << v.y << ' ' << v.z << ')';
-    return os.str();
-}
-
-std::string str(const scalar v)
-{
-    std::ostringstream os;
-    os << v;
-    return os.str();
-}
-
 // Points of a 2D case must lie in its plane (z = 0): off it they would
 // silently see no particle.
 std::vector<vec3> readPoints(const dictionary& dict, const std::string& key,
@@ -71,7 +56,8 @@ std::vector<vec3> readPoints(const dictionary& dict, const std::string& key,
             if (x.z != 0)
             {
                 dict.fatalAt(key, "Function object '" + name + "': the case"
-                    " is 2D (z = 0) but " + key + " has the point " + str(x));
+                    " is 2D (z = 0) but " + key + " has the point "
+                    + str(x, 10));
             }
         }
     }
@@ -270,7 +256,7 @@ void probes::writeHeader(std::ostream& os) const
 {
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
-        os << "# Probe " << k << ' ' << str(locations_[k]) << '\n';
+        os << "# Probe " << k << ' ' << str(locations_[k], 10) << '\n';
     }
     os << "# Time";
     for (std::size_t k = 0; k < locations_.size(); ++k)
@@ -349,7 +335,7 @@ void freeSurfaceGauges::writeHeader(std::ostream& os) const
 {
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
-        os << "# Gauge " << k << ' ' << str(locations_[k]) << '\n';
+        os << "# Gauge " << k << ' ' << str(locations_[k], 10) << '\n';
     }
     os << "# Time";
     for (std::size_t k = 0; k < locations_.size(); ++k)
@@ -524,13 +510,13 @@ surgeFront::surgeFront(std::string name, const dictionary& dict,
     if (!(magD > 0) || !std::isfinite(magD))
     {
         dict.fatalAt("direction", "Function object '" + this->name()
-            + "': direction must be a non-zero vector, found " + str(d));
+            + "': direction must be a non-zero vector, found " + str(d, 10));
     }
     if (nDimensions == 2 && d.z != 0)
     {
         dict.fatalAt("direction", "Function object '" + this->name()
             + "': in a 2D case the direction lies in the x-y plane (z = 0),"
-            " found " + str(d));
+            " found " + str(d, 10));
     }
     direction_ = (1/magD)*d;
 }
@@ -627,8 +613,8 @@ std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
             if (d > 2*dp_)
             {
                 warning("Function object '" + name() + "': the point "
-                    + str(p) + " is " + str(d) + " m from solid '" + body_
-                    + "' (its nearest particle, at " + str(chosen_.back())
+                    + str(p, 10) + " is " + str(d) + " m from solid '" + body_
+                    + "' (its nearest particle, at " + str(chosen_.back(), 10)
                     + ", is followed instead): check the points");
             }
         }
@@ -651,8 +637,8 @@ void solidPoints::writeHeader(std::ostream& os) const
        << " with reference positions X:\n";
     for (std::size_t k = 0; k < chosen_.size(); ++k)
     {
-        os << "#   point " << k << ": " << str(chosen_[k]) << " (asked "
-           << str(points_[k]) << ")\n";
+        os << "#   point " << k << ": " << str(chosen_[k], 10) << " (asked "
+           << str(points_[k], 10) << ")\n";
     }
     os << "# Time";
     for (std::size_t k = 0; k < chosen_.size(); ++k)

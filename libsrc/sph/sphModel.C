@@ -3,9 +3,9 @@
 \*---------------------------------------------------------------------------*/
 #include "sphModel.H"
 #include "error.H"
+#include "formatting.H"
 
 #include <cmath>
-#include <sstream>
 
 namespace sphvcpm
 {
@@ -279,11 +279,8 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
             const scalar v = dict.getDimensioned<scalar>(key, dims);
             if (!(v > 0))
             {
-                std::ostringstream found;
-                found << v;
                 dict.fatalAt(key, "Keyword '" + std::string(key)
-                    + "': expected a positive number, found "
-                    + found.str());
+                    + "': expected a positive number, found " + str(v));
             }
             return v;
         };
