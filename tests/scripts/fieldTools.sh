@@ -12,6 +12,16 @@ fieldValues()
         inList { gsub(/[()]/, ""); print }' "$1"
 }
 
+# withFirstValue <file> <value>: the ascii field with its first value
+# replaced (a damaged field for the error tests), on stdout.
+withFirstValue()
+{
+    awk -v value="$2" '
+        /^\($/ { inList = 1; print; next }
+        inList && !done { print value; done = 1; next }
+        { print }' "$1"
+}
+
 # bodyTable <timeDir> <body> <field>...: "id value..." per particle, sorted
 # by id, for comparing runs whose particle order may differ.
 bodyTable()

@@ -134,8 +134,7 @@ restartFails()    # restartFails <what> <pattern>: exit 1 saying pattern
 }
 rm "$c/0.32/water/U"
 restartFails "restart without water/U" "Field .*0.32/water/U is missing: a restart needs it"
-awk '/^\($/ { inList = 1; print; next } inList && !done { print 7; done = 1; next } { print }' \
-    "$scratch/fsiHalves/0.32/plate/clamped" > "$c/0.32/plate/clamped"
+withFirstValue "$scratch/fsiHalves/0.32/plate/clamped" 7 > "$c/0.32/plate/clamped"
 restartFails "clamped 7" "particle id [0-9]+ has clamped 7 in .*0.32/plate/clamped: expected 0 \\(free\\) or 1"
 rm "$c/0.32/plate/Umean"
 restartFails "restart without plate/Umean" "0.32/plate/Umean is missing"

@@ -9,6 +9,7 @@
 # copy with 'surfaceCorrection off' must get generateParticles' thin-member
 # warning (about -16 %).
 source "$(dirname "$0")/testLib.sh"
+source "$(dirname "$0")/fieldTools.sh"
 
 c="$scratch/cantilever"
 mkdir -p "$c/system" "$c/constant"
@@ -108,8 +109,7 @@ check "restart without 0/: exit status 1" [ $? -eq 1 ]
 expectIn "restart without 0/: says why 0/ is needed" "$scratch/log.noZero" \
     "Restart from time 0.3 needs the initial time \\(index 0, as the 0/ of generateParticles\\), the reference lattice of the solids' bonds; the earliest time of the case, 0.1, is not one"
 mv "$r/0.archived" "$r/0"
-awk '/^\($/ { inList = 1; print; next } inList && !done { print 99999; done = 1; next } { print }' \
-    "$c/0.3/beam/id" > "$r/0.3/beam/id"
+withFirstValue "$c/0.3/beam/id" 99999 > "$r/0.3/beam/id"
 sphVcpmFsi -case "$r" > "$scratch/log.badId" 2>&1
 check "restart with a particle not in 0/: exit status 1" [ $? -eq 1 ]
 expectIn "restart with a particle not in 0/: names it" "$scratch/log.badId" \
