@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <iomanip>
 #include <iostream>
@@ -141,6 +142,11 @@ bool argList::parse(int argc, char** argv)
     {
         casePath_ = casePath_.parent_path();
     }
+    // As OpenFOAM's argList, before any dictionary is read, so that
+    // #include "$FOAM_CASE/..." and <case> find the case being run (an
+    // inherited value may be another case's).
+    setenv("FOAM_CASE", casePath_.c_str(), 1);
+    setenv("FOAM_CASENAME", casePath_.filename().c_str(), 1);
     return true;
 }
 

@@ -372,7 +372,8 @@ entry::entry(const entry& e)
     dict_(e.dict_ ? std::make_unique<dictionary>(*e.dict_) : nullptr),
     file_(e.file_),
     line_(e.line_),
-    isPattern_(e.isPattern_)
+    isPattern_(e.isPattern_),
+    usedAsVariable_(e.usedAsVariable_)
 {}
 
 
@@ -679,7 +680,7 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
     {
         if
         (
-            e.isPattern()
+            e.isPattern() || e.usedAsVariable()
          || std::find(valid.begin(), valid.end(), e.keyword()) != valid.end()
         )
         {

@@ -298,7 +298,13 @@ void dictionaryParser::add(dictionary& dict, entry&& e, inputMode mode)
         }
     }
 
+    // A variable redefined after its use stays a variable.
+    const bool variable = existing->usedAsVariable();
     *existing = std::move(e);
+    if (variable)
+    {
+        existing->markUsedAsVariable();
+    }
     if (existing->isDict())
     {
         adopt(existing->dict(), dict, existing->keyword());
@@ -1017,6 +1023,9 @@ dictionaryParser::resolved dictionaryParser::resolve
     r.ent = findScoped(dict, name, patterns, &searched);
     if (r.ent)
     {
+        // A variable of the case, not a misspelt keyword (checkKeywords).
+        // The entry belongs to the dictionary being read.
+        const_cast<entry*>(r.ent)->markUsedAsVariable();
         return r;
     }
 

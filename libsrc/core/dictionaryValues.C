@@ -141,7 +141,16 @@ public:
             {"t", true}, {"f", false}, {"any", true}, {"none", false}
         };
         const std::string what = "a switch (true/false, on/off, yes/no, "
-            "y/n, t/f, any/none)";
+            "y/n, t/f, any/none, 1/0)";
+        // OpenFOAM reads the integers 1 and 0 as switches (openTop 1;).
+        if
+        (
+            !atEnd() && peek().type == token::kind::integer
+         && (peek().integerValue == 0 || peek().integerValue == 1)
+        )
+        {
+            return next().integerValue == 1;
+        }
         if (atEnd() || peek().type != token::kind::word)
         {
             expected(what);

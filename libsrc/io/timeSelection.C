@@ -80,6 +80,13 @@ timeSelection::timeSelection(const std::string& ranges, bool latestTime,
 
 void timeSelection::parse(const std::string& text)
 {
+    // OpenFOAM lets -latestTime win silently; a user who gave both meant
+    // something, so say which to drop.
+    if (latestTime_)
+    {
+        fatalError("Options -time '" + text + "' and -latestTime conflict: "
+            "-latestTime selects only the latest time. Give one of them.");
+    }
     text_ = text;
     hasRanges_ = true;
     auto bad = [&](const std::string& why)
@@ -139,6 +146,7 @@ void timeSelection::parse(const std::string& text)
             }
             r.upper = r.lower;
             r.exact = true;
+            r.text = item;
         }
         else
         {
@@ -175,17 +183,50 @@ void timeSelection::parse(const std::string& text)
 }
 
 
-std::vector<timeInstant> timeSelection::select(
+namespace
+{
+
+// OpenFOAM's rule: a single value picks the nearest time (the first of
+// two as near); times is not empty.
+std::size_t nearestIndex(const std::vector<timeInstant>& times, double value)
+{
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < times.size(); ++i)
+    {
+        if
+        (
+            std::abs(times[i].value - value)
+          < std::abs(times[nearest].value - value)
+        )
+        {
+            nearest = i;
+        }
+    }
+    return nearest;
+}
+
+} // End anonymous namespace
+
+
+std::vector<timeInstant> timeSelection::eligible(
     const std::vector<timeInstant>& times) const
 {
-    std::vector<timeInstant> candidates;
+    std::vector<timeInstant> result;
     for (const auto& t : times)
     {
         if (!(noZero_ && t.value == 0))
         {
-            candidates.push_back(t);
+            result.push_back(t);
         }
     }
+    return result;
+}
+
+
+std::vector<timeInstant> timeSelection::select(
+    const std::vector<timeInstant>& times) const
+{
+    const std::vector<timeInstant> candidates = eligible(times);
     if (candidates.empty())
     {
         return candidates;
@@ -204,17 +245,7 @@ std::vector<timeInstant> timeSelection::select(
     {
         if (r.exact)
         {
-            // OpenFOAM's rule: a single value picks the nearest time.
-            std::size_t nearest = 0;
-            for (std::size_t i = 1; i < candidates.size(); ++i)
-            {
-                if (std::abs(candidates[i].value - r.lower)
-                  < std::abs(candidates[nearest].value - r.lower))
-                {
-                    nearest = i;
-                }
-            }
-            selected[nearest] = true;
+            selected[nearestIndex(candidates, r.lower)] = true;
         }
         else
         {
@@ -271,6 +302,32 @@ std::vector<timeInstant> timeSelection::selectCase(
     const std::filesystem::path& caseDir) const
 {
     return selectOrFail(caseDir, findTimes(caseDir));
+}
+
+
+std::vector<std::string> timeSelection::nearestNotes(
+    const std::vector<timeInstant>& times) const
+{
+    std::vector<std::string> notes;
+    const std::vector<timeInstant> candidates = eligible(times);
+    if (latestTime_ || candidates.empty())
+    {
+        return notes;
+    }
+    for (const auto& r : ranges_)
+    {
+        if (!r.exact)
+        {
+            continue;
+        }
+        const timeInstant& t = candidates[nearestIndex(candidates, r.lower)];
+        if (t.value != r.lower)
+        {
+            notes.push_back("-time " + r.text + ": the nearest time written"
+                " is " + t.name);
+        }
+    }
+    return notes;
 }
 
 

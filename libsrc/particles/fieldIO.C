@@ -12,6 +12,8 @@
 //     ;
 //
 // Binary files hold "N(" followed directly by the raw values and ");".
+// Read also: OpenFOAM's "value uniform v;" (v for every particle, as
+// written by hand in 0/) and "N{v}".
 // Fields have millions of values, so the header goes through the
 // dictionary reader but the values do not: ascii values are converted with
 // to_chars/from_chars in one pass over the file held in memory, binary ones
@@ -745,14 +747,18 @@ void readBinaryValues(fieldParser& parser, void* dest, label n,
 }
 
 
-// N{value}, as OpenFOAM writes a list of equal values; ends before '}'.
+// One value for all n values: N{value}, as OpenFOAM writes a list of
+// equal values (closer '}'), or 'value uniform value;' (closer ';', what
+// names the field for messages); ends before the closer.
 void readUniformValue(fieldParser& parser, void* dest, label n,
-                      fieldKind kind, const bool points)
+                      fieldKind kind, const bool points, const char closer,
+                      const std::string& what = "")
 {
     parser.skipSpace();
     parseError err;
     const char* b = parser.data() + parser.pos();
-    const char* e = parser.data() + parser.size();
+    // The value ends at the closer: "0;" is the number 0.
+    const char* e = std::find(b, parser.data() + parser.size(), closer);
     const char* q = nullptr;
     switch (kind)
     {
@@ -785,17 +791,32 @@ void readUniformValue(fieldParser& parser, void* dest, label n,
             break;
         }
     }
-    if (!q)
+    if (!q && what.empty())
     {
         const std::size_t at = std::size_t(err.at - parser.data());
         parser.fail(parser.found(at) + " " + err.why, at);
     }
+    if (!q)
+    {
+        // The value as written, up to the ';'.
+        std::string text(b, e);
+        text.erase(text.find_last_not_of(" \t\r\n") + 1);
+        if (text.empty())
+        {
+            parser.fail("Expected a " + std::string(listType(kind))
+                + " after 'uniform' (" + what + "), found "
+                + parser.found(parser.pos()), parser.pos());
+        }
+        parser.fail("The uniform value '" + text.substr(0, 40) + "' "
+            + err.why + " (" + what + ")", parser.pos());
+    }
     parser.setPos(std::size_t(q - parser.data()));
     parser.skipSpace();
-    if (parser.atEnd() || parser.peek() != '}')
+    if (parser.atEnd() || parser.peek() != closer)
     {
-        parser.fail("Expected '}' after the uniform value, found "
-            + parser.found(parser.pos()), parser.pos());
+        parser.fail("Expected '" + std::string(1, closer) + "' after the "
+            "uniform value, found " + parser.found(parser.pos()),
+            parser.pos());
     }
 }
 
@@ -836,10 +857,9 @@ void readAsciiList(fieldParser& parser, void* dest, label n, fieldKind kind,
 }
 
 
-// After the closing bracket: ';' and nothing but comments.
+// After the value: ';' and nothing but comments.
 void readEntryEnd(fieldParser& parser)
 {
-    parser.setPos(parser.pos() + 1);
     parser.skipSpaceAndComments();
     if (parser.atEnd() || parser.peek() != ';')
     {
@@ -874,6 +894,29 @@ void* fieldData(particleBody& body, const std::string& name, fieldKind kind)
             return body.addLabelField(name).data();
     }
     return nullptr;
+}
+
+
+// value uniform v; gives every particle of the body the value v. The
+// number of particles is the body's, from its listed position field (read
+// first by readTimeDirectory).
+void readUniformField(fieldParser& parser, particleBody& body,
+                      const std::string& fieldName, fieldKind kind,
+                      const std::size_t at)
+{
+    if (body.size() == 0)
+    {
+        parser.fail("'value uniform' gives one value to every particle, but"
+            " body '" + body.name() + "' has none yet: its number of"
+            " particles comes from the list of its 'position' field, read"
+            " first", at);
+    }
+    const bool points =
+        kind == fieldKind::vectorField && particleBody::isPointField(fieldName);
+    const std::string what = "field '" + fieldName + "', the header says"
+        " class " + className(kind);
+    readUniformValue(parser, fieldData(body, fieldName, kind), body.size(),
+                     kind, points, ';', what);
 }
 
 } // End anonymous namespace
@@ -1036,10 +1079,27 @@ void readField(const std::filesystem::path& file, particleBody& body)
             + className(kind), "class");
     }
 
-    // value nonuniform List<type> N( or N{
+    // value uniform v; or value nonuniform List<type> N( or N{
     expectWord(parser, "value",
         "Expected the entry 'value' after the FoamFile header");
-    expectWord(parser, "nonuniform", "Expected 'nonuniform' after 'value'");
+    parser.skipSpaceAndComments();
+    const std::size_t formAt = parser.pos();
+    const std::string form = parser.word();
+    if (form == "uniform")
+    {
+        readUniformField(parser, body, fieldName, kind, formAt);
+        readEntryEnd(parser);
+        if (fieldName == "id")
+        {
+            body.setNextId(checkIds(body.labelField("id"), fileName));
+        }
+        return;
+    }
+    if (form != "nonuniform")
+    {
+        parser.fail("Expected 'uniform' or 'nonuniform' after 'value', found "
+            + parser.found(formAt), formAt);
+    }
     const std::string listName = "List<" + std::string(listType(kind)) + ">";
     expectWord(parser, listName, "Expected '" + listName
         + "' (the header says class " + className(kind) + ")");
@@ -1105,12 +1165,13 @@ void readField(const std::filesystem::path& file, particleBody& body)
     }
     else if (uniform)
     {
-        readUniformValue(parser, dest, n, kind, points);
+        readUniformValue(parser, dest, n, kind, points, '}');
     }
     else
     {
         readAsciiList(parser, dest, n, kind, points);
     }
+    parser.setPos(parser.pos() + 1);   // the closing bracket
     readEntryEnd(parser);
 
     if (fieldName == "id")

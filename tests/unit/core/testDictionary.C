@@ -590,6 +590,12 @@ TEST(dictionaryValues, switchesAndWords)
     EXPECT_TRUE(d.get<bool>("g"));
     EXPECT_TRUE(d.get<bool>("h"));
     EXPECT_FALSE(d.get<bool>("i"));
+    // 1 and 0, as OpenFOAM reads them (openTop 1;); other numbers are
+    // errors (testDictionaryErrors.C).
+    const auto n = dictionary::fromString("openTop 1; closed 0;\n");
+    EXPECT_TRUE(n.get<bool>("openTop"));
+    EXPECT_FALSE(n.get<bool>("closed"));
+    EXPECT_TRUE(n.getOrDefault<bool>("openTop", false));
     EXPECT_EQ(d.get<std::string>("w"), "word");
     EXPECT_EQ(d.get<std::string>("s"), "a string");
     EXPECT_EQ(d.getWord("type", {"cpu", "cuda"}), "cuda");
@@ -734,6 +740,61 @@ TEST(dictionaryLookup, checkKeywordsNamesLineAndSuggestion)
          "Valid keywords are: (startTime endTime deltaT writeInterval)"});
     EXPECT_NO_THROW(d.checkKeywords({"startTime", "endTime",
                                      "writeIntervall"}));
+}
+
+
+TEST(dictionaryLookup, checkKeywordsAcceptsVariables)
+{
+    // Variables as OpenFOAM users write them, some from an included file:
+    // every entry a $name expanded passes, in copies too.
+    scratchDir dir("dictVariables");
+    dir.write("system/caseParams", "L 0.2;\nunusedHere 1;\n");
+    const auto file = dir.write
+    (
+        "system/generateParticlesDict",
+        "#include \"caseParams\"\n"
+        "H 0.2;\n"
+        "dpVal 5e-3;\n"
+        "dp $dpVal;\n"
+        "max ($L $H 0);\n"
+        "H 0.25;\n"                  // redefined after its use
+        "defaults { type fluid; }\n"
+        "bodies\n"
+        "{\n"
+        "    water { $defaults; r 0.1; radius $r; }\n"
+        "}\n"
+    );
+    const dictionary d = dictionary::fromFile(file);
+    const std::vector<std::string> top = {"dp", "max", "bodies",
+                                          "unusedHere"};
+    EXPECT_NO_THROW(d.checkKeywords(top));
+    const dictionary& water = d.subDict("bodies").subDict("water");
+    EXPECT_NO_THROW(water.checkKeywords({"type", "radius"}));
+    EXPECT_EQ(d.get<vec3>("max"), (vec3{0.2, 0.2, 0}));
+
+    const dictionary copy(d);
+    dictionary assigned;
+    assigned = d;
+    EXPECT_NO_THROW(copy.checkKeywords(top));
+    EXPECT_NO_THROW(assigned.checkKeywords(top));
+    EXPECT_NO_THROW(copy.subDict("bodies").subDict("water")
+        .checkKeywords({"type", "radius"}));
+
+    // A keyword no $name expands is checked as before: the misspelling,
+    // and a variable of the included file that this file does not use.
+    const std::string name = file.string();
+    const auto bad = dictionary::fromString
+    (
+        "#include \"caseParams\"\nH 0.2;\ndp $H;\nmaxx ($L $H 0);\n", name
+    );
+    expectError(catchFatal([&]{ bad.checkKeywords({"dp", "max",
+                                                   "unusedHere"}); }),
+        name, 4, {"Unknown keyword 'maxx' in dictionary \"" + name + "\".",
+                  "Did you mean 'max'?",
+                  "Valid keywords are: (dp max unusedHere)"});
+    const auto err = catchFatal([&]{ bad.checkKeywords({"dp", "maxx"}); });
+    expectError(err, (dir.path()/"system"/"caseParams").string(), 2,
+        {"Unknown keyword 'unusedHere'"});
 }
 
 

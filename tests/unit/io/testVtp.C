@@ -444,7 +444,6 @@ TEST(timeSelection, rangesAndLists)
 TEST(timeSelection, latestTimeAndNoZero)
 {
     EXPECT_EQ(selected("", true), "1");
-    EXPECT_EQ(selected("0:0.2", true), "1");
     EXPECT_EQ(selected("", false, true), "0.1 0.2 0.3 0.5 1");
     EXPECT_EQ(selected("0:0.2", false, true), "0.1 0.2");
     EXPECT_EQ(selected("0", false, true), "0.1");
@@ -477,10 +476,50 @@ TEST(timeSelection, badSyntaxNamesTheOption)
 }
 
 
+TEST(timeSelection, latestTimeWithTimeIsAnError)
+{
+    // They contradict each other: neither may win silently.
+    const FatalError err = catchFatal([]()
+    {
+        timeSelection("0.1", true, false);
+    });
+    expectMessage(err, {"Options -time '0.1' and -latestTime conflict",
+                        "Give one of them"});
+    EXPECT_FALSE(err.isIOError());
+}
+
+
+TEST(timeSelection, nearestNotes)
+{
+    const auto times = instants({"0", "0.1", "0.6"});
+    const auto notes = [&](const std::string& ranges, bool noZero = false)
+    {
+        std::string s;
+        for (const auto& n : timeSelection(ranges, false, noZero)
+                                 .nearestNotes(times))
+        {
+            s += (s.empty() ? "" : "|") + n;
+        }
+        return s;
+    };
+    EXPECT_EQ(notes("0.7"), "-time 0.7: the nearest time written is 0.6");
+    EXPECT_EQ(notes("0.6"), "");
+    EXPECT_EQ(notes("6e-1, 0.1:0.6"), "");
+    EXPECT_EQ(notes("0.04,0.7"),
+              "-time 0.04: the nearest time written is 0|"
+              "-time 0.7: the nearest time written is 0.6");
+    EXPECT_EQ(notes("0", true), "-time 0: the nearest time written is 0.1");
+    EXPECT_EQ(notes(""), "");
+    EXPECT_TRUE(timeSelection("0.7", false, false).nearestNotes({}).empty());
+}
+
+
 TEST(timeSelection, describe)
 {
-    EXPECT_EQ(timeSelection("0:1", true, true).describe(),
-              "-time '0:1' -latestTime -noZero");
+    EXPECT_EQ(timeSelection("0:1", false, true).describe(),
+              "-time '0:1' -noZero");
+    EXPECT_EQ(timeSelection("", true, true).describe(),
+              "-latestTime -noZero");
     EXPECT_EQ(timeSelection().describe(), "the default (all times)");
 }
 

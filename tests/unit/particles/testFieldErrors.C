@@ -180,9 +180,47 @@ TEST_F(fieldErrors, notTheValueEntry)
         {"Expected the entry 'value' after the FoamFile header, "
          "found 'values'"});
 
-    text = replace(good("rho"), "nonuniform", "uniform");
-    expectError(broken("rho", text), file_, lineOf(text, "uniform"),
-        {"Expected 'nonuniform' after 'value', found 'uniform'"});
+    text = replace(good("rho"), "nonuniform", "unifrom");
+    expectError(broken("rho", text), file_, lineOf(text, "unifrom"),
+        {"Expected 'uniform' or 'nonuniform' after 'value', found "
+         "'unifrom'"});
+}
+
+
+TEST_F(fieldErrors, badUniformValue)
+{
+    // Headers of a scalar field (rho) and a vector field (U).
+    const std::string rho = good("rho");
+    const std::string rhoHead = rho.substr(0, rho.find("value"));
+    const std::string head = replace(rhoHead, "scalarField", "vectorField");
+    const int line = lastLine(head);   // of the value entry
+
+    // A scalar where the header says vectorField, and the other way round.
+    std::string text = head + "value uniform 0;\n";
+    expectError(broken("U", text, 3), file_, line,
+        {"The uniform value '0' is not a vector: expected '(x y z)' (field "
+         "'U', the header says class vectorField)"});
+    text = rhoHead + "value uniform (0 0 0);\n";
+    expectError(broken("rho", text, 3), file_, line,
+        {"The uniform value '(0 0 0)' is not a number (field 'rho', the "
+         "header says class scalarField)"});
+
+    // Two components, no value, no ';', something after it.
+    expectError(broken("U", head + "value uniform (1 2);\n", 3), file_,
+        line, {"The uniform value '(1 2)' is not a vector: it has fewer "
+               "than 3 components"});
+    expectError(broken("U", head + "value uniform ;\n", 3), file_, line,
+        {"Expected a vector after 'uniform' (field 'U'", "found ';'"});
+    expectError(broken("U", head + "value uniform (1 2 3)\n", 3), file_,
+        line + 1, {"Expected ';' after the uniform value, found end of "
+                   "file"});
+    expectError(broken("U", head + "value uniform (1 2 3); x 1;\n", 3),
+        file_, line, {"Unexpected 'x' after the value entry"});
+
+    // An empty body: a uniform value cannot tell how many particles.
+    expectError(broken("U", head + "value uniform (1 2 3);\n"), file_, line,
+        {"'value uniform' gives one value to every particle, but body "
+         "'water' has none yet", "'position' field, read first"});
 }
 
 

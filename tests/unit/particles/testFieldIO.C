@@ -299,6 +299,42 @@ TEST(fieldIO, readsOpenFOAMsOtherAsciiForms)
 }
 
 
+TEST(fieldIO, readsUniformValues)
+{
+    // 'value uniform v;' as an OpenFOAM user writes it in 0/<body>/: every
+    // particle of the body (its size from position, read first) gets v.
+    scratchDir dir;
+    const fs::path bodyDir = dir.path()/"0"/"water";
+    writeTimeDirectory(dir.path(), timeState(),
+                       {test::randomBody("water", bodyType::fluid, 3, 5, 7)});
+    writeText(bodyDir/"U", header("ascii", "vectorField", "0/water", "U")
+      + "value           uniform (0.5 -1 2e-3);\n" + end());
+    writeText(bodyDir/"rho", header("ascii", "scalarField", "0/water", "rho")
+      + "value uniform 1000; // fresh water\n" + end());
+    writeText(bodyDir/"cell", header("ascii", "labelField", "0/water",
+                                     "cell")
+      + "value uniform\n    -3\n;\n");
+
+    const std::vector<particleBody> bodies =
+        readTimeDirectory(dir.path(), "0");
+    ASSERT_EQ(bodies.size(), 1u);
+    const particleBody& water = bodies[0];
+    ASSERT_EQ(water.size(), 5);
+    EXPECT_EQ(water.vectorField("U"),
+              std::vector<vec3>(5, vec3{0.5, -1, scalar(2e-3)}));
+    EXPECT_EQ(water.scalarField("rho"), std::vector<scalar>(5, 1000));
+    EXPECT_EQ(water.labelField("cell"), std::vector<label>(5, -3));
+
+    // Also in a body read field by field, and in a binary-format file
+    // (OpenFOAM writes uniform values as text there too).
+    particleBody body = test::randomBody("b", bodyType::fluid, 3, 4, 2);
+    writeText(dir.path()/"p", header("binary", "scalarField", "", "p")
+      + "value uniform 0;\n");
+    readField(dir.path()/"p", body);
+    EXPECT_EQ(body.scalarField("p"), std::vector<scalar>(4, 0));
+}
+
+
 TEST(fieldIO, readIntoBodyOfTheSameSize)
 {
     scratchDir dir;

@@ -36,8 +36,14 @@ int main(int argc, char* argv[])
         args.printBanner();
 
         vtkCaseConverter converter(args.casePath());
-        const std::vector<timeInstant> times = timeSelection(args)
-            .selectOrFail(args.casePath(), converter.times());
+        const timeSelection selection(args);
+        const std::vector<timeInstant> times =
+            selection.selectOrFail(args.casePath(), converter.times());
+        // -time 0.7 takes the nearest time, as OpenFOAM: say which.
+        for (const auto& note : selection.nearestNotes(converter.times()))
+        {
+            std::cout << note << "\n";
+        }
         if (args.found("fields"))
         {
             converter.restrictFields(vtkCaseConverter::parseWordList(

@@ -1,0 +1,108 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The command line: FOAM_CASE and FOAM_CASENAME set from the case, as
+// OpenFOAM's argList does, so that dictionaries can include through them.
+
+#include "argList.H"
+#include "dictionary.H"
+#include "../testTools.H"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace sphvcpm;
+using test::scratchDir;
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+// Parses words as a command line of testApp.
+bool parse(argList& args, std::vector<std::string> words)
+{
+    words.insert(words.begin(), "testApp");
+    std::vector<char*> argv;
+    for (auto& w : words)
+    {
+        argv.push_back(w.data());
+    }
+    argv.push_back(nullptr);
+    return args.parse(int(words.size()), argv.data());
+}
+
+std::string env(const char* name)
+{
+    const char* v = std::getenv(name);
+    return v ? v : "<unset>";
+}
+
+// Restores the environment variable of its name when it goes.
+class savedEnv
+{
+public:
+    explicit savedEnv(const char* name)
+    :
+        name_(name),
+        had_(std::getenv(name) != nullptr),
+        value_(had_ ? std::getenv(name) : "")
+    {}
+    ~savedEnv()
+    {
+        if (had_)
+        {
+            ::setenv(name_, value_.c_str(), 1);
+        }
+        else
+        {
+            ::unsetenv(name_);
+        }
+    }
+
+private:
+    const char* name_;
+    bool had_;
+    std::string value_;
+};
+
+} // End anonymous namespace
+
+
+TEST(argList, setsFoamCaseForIncludes)
+{
+    const savedEnv foamCase("FOAM_CASE");
+    const savedEnv foamCaseName("FOAM_CASENAME");
+    scratchDir dir("argList");
+    dir.write("damBreak/system/caseParams", "H 0.2;\n");
+    const fs::path caseDir = dir.path()/"damBreak";
+
+    // Inherited from another case: the case being run wins.
+    ::setenv("FOAM_CASE", "/some/other/case", 1);
+    ::setenv("FOAM_CASENAME", "case", 1);
+    argList args("testApp", "test");
+    ASSERT_TRUE(parse(args, {"-case", caseDir.string() + "/"}));
+    EXPECT_EQ(env("FOAM_CASE"), caseDir.string());
+    EXPECT_EQ(env("FOAM_CASENAME"), "damBreak");
+
+    const auto d = dictionary::fromString
+    (
+        "#include \"$FOAM_CASE/system/caseParams\"\nL $H;\n",
+        "elsewhere/someDict"
+    );
+    EXPECT_EQ(d.get<double>("L"), 0.2);
+    EXPECT_NO_THROW(d.checkKeywords({"L"}));
+
+    // Without -case: the working directory.
+    const fs::path cwd = fs::current_path();
+    fs::current_path(caseDir/"system");
+    argList here("testApp", "test");
+    const bool parsed = parse(here, {});
+    fs::current_path(cwd);
+    ASSERT_TRUE(parsed);
+    EXPECT_EQ(env("FOAM_CASE"), here.casePath().string());
+    EXPECT_EQ(env("FOAM_CASENAME"), "system");
+}
