@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -21,6 +23,9 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
             "cannot find system/controlDict of the case");
     }
     timeControl tc;
+    // Before reading: a change made while it is read is seen later.
+    std::error_code ec;
+    tc.modified = std::filesystem::last_write_time(file, ec);
     tc.dict = dictionary::fromFile(file);
     const dictionary& d = tc.dict;
     d.checkKeywords({"application", "startFrom", "startTime", "stopAt",
@@ -34,7 +39,7 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
     // the entries that follow (OpenFOAM reads them too).
     if (d.found("application")) d.get<std::string>("application");
     if (d.found("libs")) d.get<std::vector<std::string>>("libs");
-    if (d.found("runTimeModifiable")) d.get<bool>("runTimeModifiable");
+    tc.runTimeModifiable = d.getOrDefault<bool>("runTimeModifiable", true);
 
     const std::string from = d.getWordOrDefault("startFrom",
         {"startTime", "latestTime", "firstTime"}, "latestTime");
@@ -43,7 +48,7 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
                  : startFromType::latestTime;
     tc.startTime = d.getOrDefault<double>("startTime", 0);
     tc.stopAt = d.getWordOrDefault("stopAt",
-        {"endTime", "writeNow", "noWriteNow"}, "endTime");
+        {"endTime", "writeNow", "noWriteNow", "nextWrite"}, "endTime");
     tc.endTime = d.get<double>("endTime");
     if (!(tc.endTime > 0))
     {
@@ -92,6 +97,18 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
     }
     tc.writeFormatName = d.getWordOrDefault("writeFormat",
         {"ascii", "binary"}, "binary");
+    if (d.found("writeCompression"))
+    {
+        const std::string c = d.getWord("writeCompression", {"off", "no",
+            "false", "uncompressed", "on", "yes", "true", "compressed"});
+        if (c == "on" || c == "yes" || c == "true" || c == "compressed")
+        {
+            const entry& e = *d.findEntry("writeCompression");
+            warning("writeCompression " + c + ": time directories are"
+                " written uncompressed (binary writeFormat is the compact"
+                " one)", e.file(), e.line());
+        }
+    }
     tc.writePrecision = d.getOrDefault<label>("writePrecision", 10);
     if (tc.writePrecision < 1 || tc.writePrecision > 17)
     {
@@ -122,16 +139,40 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
 namespace sphvcpm
 {
 
+namespace
+{
+
+// k*writeInterval in binary can be an ulp off the decimal time it means
+// (3*0.05 = 0.15000000000000002), which uniform/time and ParaView would
+// then show: the double nearest to its 15-digit decimal instead.
+double decimalTime(const double t)
+{
+    if (!std::isfinite(t)) return t;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.15g", t);
+    return std::strtod(text, nullptr);
+}
+
+} // End anonymous namespace
+
+
 writeSchedule::writeSchedule(const timeControl& control,
                              const double startTime)
 :
     control_(control),
-    nextIndex_(std::floor(startTime/control.writeInterval + 1e-9) + 1),
-    next_(nextIndex_*control.writeInterval),
     precision_(control.timePrecision),
     lastName_(timeName(startTime, control.format, control.timePrecision)),
     lastTime_(startTime)
 {
+    restart(startTime);
+}
+
+
+void writeSchedule::restart(const double startTime)
+{
+    const timeControl& control = control_;
+    nextIndex_ = std::floor(startTime/control.writeInterval + 1e-9) + 1;
+    next_ = decimalTime(nextIndex_*control.writeInterval);
     if (!std::isfinite(next_))
     {
         // startTime/writeInterval overflows (runTime with a subnormal
@@ -210,13 +251,13 @@ void writeSchedule::written(const double time, const std::string& name,
     {
         nextIndex_ = std::max(nextIndex_ + 1,
                               std::floor(time/interval + 1e-9) + 1);
-        next_ = nextIndex_*interval;
+        next_ = decimalTime(nextIndex_*interval);
     }
     if (reached(time, next_))
     {
         // Round-off at a write time: the one after.
         nextIndex_ += 1;
-        next_ = nextIndex_*interval;
+        next_ = decimalTime(nextIndex_*interval);
     }
     if (!std::isfinite(next_) || reached(time, next_))
     {

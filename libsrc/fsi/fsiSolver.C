@@ -7,6 +7,7 @@
 #include "fluidInteractions.H"
 #include "pairRates.H"
 #include "startState.H"
+#include "stopControl.H"
 #include "parallel.H"
 #include "withKernel.H"
 
@@ -124,6 +125,23 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
               + std::to_string(model_.verletSteps) + " steps and after"
               " each write)"
             : std::string(" (two force passes a step)")) << "\n";
+    if (!control_.adjustTimeStep)
+    {
+        // A fixed step beyond the acoustic limit blows up within a few
+        // steps, whatever the flow: say so before the run.
+        const double acoustic = control_.maxCo*model_.h/model_.c0;
+        if (control_.deltaT > acoustic)
+        {
+            warning("adjustTimeStep no with deltaT " + str(control_.deltaT)
+                + " s, above the acoustic limit maxCo h/c0 = "
+                + str(acoustic) + " s (maxCo " + str(control_.maxCo) + ", h "
+                + str(model_.h) + " m, c0 " + str(model_.c0) + " m/s): the"
+                " run is likely to blow up. Lower deltaT or set"
+                " adjustTimeStep yes",
+                (caseDir_/"system/controlDict").string(),
+                control_.dict.lookupEntry("deltaT").line());
+        }
+    }
     if (model_.timeScheme == timeSchemeType::verlet)
     {
         // The leapfrog centres density diffusion, which then grows between
@@ -775,8 +793,10 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
         msg << "The last good state (time " << str(time_, 10)
             << ") was written to " << schedule_->name(time_) << "/.\n";
     }
-    msg << "Usual causes: a time step too large for the forces (lower maxCo"
-           " or maxDeltaT), a speed of sound too low for the impact"
+    msg << "Usual causes: a time step too large for the forces ("
+        << (control_.adjustTimeStep ? "lower maxCo or maxDeltaT"
+            : "lower deltaT, or set adjustTimeStep yes")
+        << "), a speed of sound too low for the impact"
            " (raise c0), or particles packed too closely at the start.";
     if (model_.timeScheme == timeSchemeType::verlet)
     {
@@ -922,6 +942,21 @@ void fsiSolver::executeFunctions()
 }
 
 
+void fsiSolver::reportRemoved()
+{
+    for (bodyInfo& b : bodies_)
+    {
+        if (b.nRemoved == b.nReported) continue;
+        const label count = b.nRemoved - b.nReported;
+        log_<< "Removed " << count << " particle" << (count > 1 ? "s" : "")
+            << " of " << b.name << " that left the domain"
+            << (b.nReported > 0 ? " since the last report (" : " (")
+            << b.nRemoved << " in all)\n";
+        b.nReported = b.nRemoved;
+    }
+}
+
+
 void fsiSolver::run()
 {
     schedule_.emplace(control_, time_);
@@ -941,6 +976,7 @@ void fsiSolver::run()
     log_<< "Starting time loop\n" << std::endl;
     const auto wallStart = std::chrono::steady_clock::now();
     double outputSeconds = 0;
+    stopControl stop(control_, *schedule_, caseDir_, log_);
     while (time_ < control_.endTime*(1 - 1e-12))
     {
         step();
@@ -949,9 +985,12 @@ void fsiSolver::run()
             executeFunctions();
         }
 
+        const stopAction action = stop.afterStep(time_);
         const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
         const auto outputStart = std::chrono::steady_clock::now();
-        if (schedule_->due(time_, timeIndex_) || atEnd)
+        bool wrote = false;
+        if (stopControl::writes(action,
+                schedule_->due(time_, timeIndex_) || atEnd))
         {
             // On the GPU the host is free while the steps run: the write
             // goes on beside them.
@@ -959,13 +998,16 @@ void fsiSolver::run()
             write(bool(gpu_));
             schedule_->written(time_, schedule_->name(time_), caseDir_,
                                startTimeName_);
+            wrote = true;
         }
-        if (stepsRun_ % control_.logInterval == 0 || atEnd)
+        const bool stopNow = stopControl::stops(action, wrote);
+        if (stepsRun_ % control_.logInterval == 0 || atEnd || stopNow)
         {
             interactionSamples_ += countInteractions();
             outputSeconds += std::chrono::duration<double>(
                 std::chrono::steady_clock::now() - outputStart).count();
             ++nInteractionSamples_;
+            reportRemoved();
             log_<< "Time = " << schedule_->name(time_) << "\n"
                 << "Step = " << timeIndex_ << "  deltaT = "
                 << str(deltaT_, 4) << "  particles = " << particles_.size()
@@ -975,6 +1017,11 @@ void fsiSolver::run()
         {
             outputSeconds += std::chrono::duration<double>(
                 std::chrono::steady_clock::now() - outputStart).count();
+        }
+        if (stopNow)
+        {
+            stop.reportStop(action, time_);
+            break;
         }
     }
 

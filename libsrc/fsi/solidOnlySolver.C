@@ -9,6 +9,7 @@
 #include "parallel.H"
 #include "sphModel.H"
 #include "startState.H"
+#include "stopControl.H"
 #include "timeDirectory.H"
 
 #include <algorithm>
@@ -84,12 +85,36 @@ solidOnlySolver::solidOnlySolver
         motions_.placeSolids(*solids_, time_);
     }
     clampMotion_ = motions_.clampMotions(*solids_);
-    stableDeltaT_ =
-        std::min(double(solids_->stableDeltaT()), control_.maxDeltaT);
-    deltaT_ = stableDeltaT_;
+    solidsDeltaT_ = solids_->stableDeltaT();
+    deltaT_ = std::min(solidsDeltaT_, control_.maxDeltaT);
     log_<< "    g = (" << g.x << " " << g.y << " " << g.z << "), " << nDim_
-        << "D, time = " << time_ << ", solid deltaT = " << stableDeltaT_
+        << "D, time = " << time_ << ", solid deltaT = " << deltaT_
         << " s\n" << std::endl;
+
+    model_.nDimensions = nDim_;
+    model_.g = g;
+    model_.dp = vGreat;
+    for (const solidBody& b : solids_->bodies())
+    {
+        bodies_.push_back({b.name, bodyType::solid, b.dp});
+        model_.dp = std::min(model_.dp, b.dp);
+        solidViews_.push_back({b.name, &b.solid->reference(),
+                               &b.solid->position});
+    }
+    control_.dict.setCaseDimensions(nDim_);
+    functions_ = functionObject::readAll(control_.dict, caseDir_,
+        startTimeName_, model_, bodies_, false);
+}
+
+
+void solidOnlySolver::executeFunctions()
+{
+    const solverSnapshot s{noFluid_, noCells_, model_, bodies_, time_,
+                           timeIndex_, deltaT_, &solidViews_};
+    for (auto& f : functions_)
+    {
+        f->execute(s);
+    }
 }
 
 
@@ -122,13 +147,16 @@ void solidOnlySolver::run()
     {
         b.solid->computeForces(openmpExec{});
     }
+    executeFunctions();
 
     log_<< "Starting time loop\n" << std::endl;
     label stepsRun = 0;
+    stopControl stop(control_, *schedule_, caseDir_, log_);
     while (time_ < control_.endTime*(1 - 1e-12))
     {
         // The same write times as the fluid loop.
-        const scalar dt = schedule_->limitStep(time_, stableDeltaT_);
+        const scalar dt = schedule_->limitStep(time_,
+            std::min(solidsDeltaT_, control_.maxDeltaT));
         for (std::size_t b = 0; b < solids_->bodies().size(); ++b)
         {
             vcpmSolid& solid = *solids_->bodies()[b].solid;
@@ -156,14 +184,21 @@ void solidOnlySolver::run()
                   " above the stable step?)");
         }
 
+        executeFunctions();
+
+        const stopAction action = stop.afterStep(time_);
         const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
-        if (schedule_->due(time_, timeIndex_) || atEnd)
+        bool wrote = false;
+        if (stopControl::writes(action,
+                schedule_->due(time_, timeIndex_) || atEnd))
         {
             write();
             schedule_->written(time_, schedule_->name(time_), caseDir_,
                                startTimeName_);
+            wrote = true;
         }
-        if (stepsRun % control_.logInterval == 0 || atEnd)
+        const bool stopNow = stopControl::stops(action, wrote);
+        if (stepsRun % control_.logInterval == 0 || atEnd || stopNow)
         {
             scalar kinetic = 0;
             for (const solidBody& b : solids_->bodies())
@@ -175,6 +210,11 @@ void solidOnlySolver::run()
                 << std::setprecision(4) << deltaT_ << std::setprecision(6)
                 << "  kinetic energy = " << kinetic << " J\n"
                 << executionTimeLine() << "\n" << std::endl;
+        }
+        if (stopNow)
+        {
+            stop.reportStop(action, time_);
+            break;
         }
     }
 }

@@ -660,6 +660,21 @@ void particleGenerator::printSummary(std::ostream& os) const
 void particleGenerator::write() const
 {
     writeTimeDirectory(caseDir_, timeState(), bodies_, format_, precision_);
+
+    // A restart (startFrom latestTime) goes on from a later time, not from
+    // this 0/; the solids' reference lattice must stay the one it ran from.
+    std::string later;
+    for (const timeInstant& t : findTimes(caseDir_))
+    {
+        if (t.value > 0) later += " " + t.name;
+    }
+    if (!later.empty())
+    {
+        warning("The case has later time directories:" + later + ". The"
+            " solver goes on from the latest of them (startFrom latestTime),"
+            " not from this 0/, and refuses a solid whose 0/ has changed:"
+            " remove them for a fresh start");
+    }
 }
 
 } // End namespace sphvcpm

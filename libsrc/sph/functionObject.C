@@ -157,7 +157,7 @@ std::ofstream& functionObject::output(const std::string& file)
 std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
     const dictionary& controlDict, const std::filesystem::path& caseDir,
     const std::string& startTimeName, const sphModel& model,
-    const std::vector<bodyInfo>& bodies)
+    const std::vector<bodyInfo>& bodies, const bool hasFluid)
 {
     std::vector<std::unique_ptr<functionObject>> all;
     const entry* functions = controlDict.findEntry("functions");
@@ -199,6 +199,13 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
             continue;
         }
         const std::string type = dict.get<std::string>("type");
+        if (!hasFluid && type != "solidPoints")
+        {
+            dict.fatalAt("type", "Function object '" + name + "' (type "
+                + type + ") samples the fluid, and this case has no fluid"
+                " body (the solids run alone): remove it or set enabled"
+                " false. Only solidPoints samples solids alone");
+        }
 
         using namespace functionObjects;
         if (type == "probes")

@@ -82,6 +82,26 @@ bool nearGrid(const cellGrid& g, const point& x, const scalar r)
     return true;
 }
 
+// A point outside the domain (most often a typo) reads 0 at every sample:
+// said once, at the first.
+void warnOutsideDomain(const std::string& name, const std::string& what,
+                       const std::vector<vec3>& points, const cellGrid& g)
+{
+    const vec3 lo = toVec3(g.origin);
+    const vec3 hi = lo + g.cellSize*vec3{scalar(g.nx), scalar(g.ny),
+                                         scalar(g.nz)};
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+        if (!nearGrid(g, toPoint(points[k]), 0))
+        {
+            warning("Function object '" + name + "': " + what + " "
+                + std::to_string(k) + " at " + str(points[k], 10)
+                + " is outside the domain " + str(lo) + " to " + str(hi)
+                + ", where there is no fluid: it reads 0");
+        }
+    }
+}
+
 // Calls f(j) for every fluid particle j within the support of x, with the
 // distance r.
 template<class Kernel, class F>
@@ -231,6 +251,11 @@ probes::probes(std::string name, const dictionary& dict,
 
 std::vector<scalar> probes::values(const solverSnapshot& s) const
 {
+    if (!checked_)
+    {
+        warnOutsideDomain(name(), "probe", locations_, s.cells.grid);
+        checked_ = true;
+    }
     std::vector<scalar> p(locations_.size(), 0);
     const particleFields& pf = s.particles;
     withKernel(s.model, [&](auto kernel)
@@ -295,6 +320,11 @@ freeSurfaceGauges::freeSurfaceGauges(std::string name,
 
 std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
 {
+    if (!checked_)
+    {
+        warnOutsideDomain(name(), "gauge", locations_, s.cells.grid);
+        checked_ = true;
+    }
     std::vector<scalar> heights(locations_.size(), 0);
     withKernel(s.model, [&](auto kernel)
     {

@@ -96,6 +96,22 @@ std::string typeOf(const dictionary& dict, const std::string& key,
     return dict.getWord(key, allowed);
 }
 
+// Keywords of one type in another type's sub-dictionary would be silently
+// unused (alpha under laminar): an error naming them.
+void onlyForType(const dictionary& sub, const std::vector<std::string>& keys,
+                 const std::string& type, const std::string& owner)
+{
+    if (type == owner) return;
+    for (const std::string& k : keys)
+    {
+        if (sub.found(k))
+        {
+            sub.fatalAt(k, "'" + k + "' applies to type " + owner
+                + " only; with type " + type + " it would have no effect");
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -168,6 +184,11 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
         if (sub)
         {
             sub->checkKeywords({"type", "delta"});
+            if (dd == "none")
+            {
+                onlyForType(*sub, {"delta"}, dd,
+                            "fourtakas or molteniColagrossi");
+            }
             m.delta = sub->getOrDefault<scalar>("delta", 0.1);
             if (!(m.delta >= 0 && m.delta <= 1))
             {
@@ -183,7 +204,8 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
         if (sub)
         {
             sub->checkKeywords({"type", "alpha"});
-            if (m.viscosity == viscosityType::artificial)
+            onlyForType(*sub, {"alpha"}, visc, "artificial");
+            if (m.viscosity == viscosityType::artificial && sub->found("alpha"))
             {
                 m.alpha = sub->getPositive("alpha");
             }
@@ -197,6 +219,8 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
         {
             sub->checkKeywords({"type", "coefficient",
                 "freeSurfaceThreshold", "maxShift", "noBoundary"});
+            onlyForType(*sub, {"coefficient", "freeSurfaceThreshold",
+                "maxShift", "noBoundary"}, shift, "fickian");
             m.shiftCoefficient =
                 sub->getOrDefault<scalar>("coefficient", -2);
             m.shiftFreeSurface = sub->getOrDefault<scalar>(
@@ -227,6 +251,7 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
         if (sub)
         {
             sub->checkKeywords({"type", "verletSteps"});
+            onlyForType(*sub, {"verletSteps"}, scheme, "verlet");
             if (m.timeScheme == timeSchemeType::verlet)
             {
                 m.verletSteps = sub->getOrDefault<label>("verletSteps", 40);

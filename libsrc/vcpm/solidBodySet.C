@@ -5,6 +5,7 @@
 #include "dictionary.H"
 #include "dimensionSet.H"
 #include "error.H"
+#include "formatting.H"
 #include "parallel.H"
 #include "timeDirectory.H"
 
@@ -126,6 +127,19 @@ solidBodySet::solidBodySet
                     + "/: a restart takes its reference lattice from "
                     + initial + "/" + b.name());
             }
+            // 0/ written again by generateParticles after the run (a changed
+            // body) is not the lattice of this state: refused, not bent.
+            const std::string regenerated = " (generateParticles run again"
+                " since?). Start afresh without the later time directories,"
+                " or restore the 0/ this run started from";
+            if (it->size() != n)
+            {
+                fatalError("Solid " + b.name() + ": time " + startTimeName
+                    + " has " + std::to_string(n) + " particles and "
+                    + initial + "/" + b.name() + " "
+                    + std::to_string(it->size()) + ": " + initial
+                    + "/ is not the initial state of this run" + regenerated);
+            }
             std::map<label, label> index;
             for (label i = 0; i < it->size(); ++i) index[it->id()[i]] = i;
             for (label i = 0; i < n; ++i)
@@ -139,6 +153,24 @@ solidBodySet::solidBodySet
                         + b.name());
                 }
                 reference[i] = it->position()[k->second];
+            }
+            if (b.hasField("displacement"))
+            {
+                const std::vector<vec3>& u = b.vectorField("displacement");
+                for (label i = 0; i < n; ++i)
+                {
+                    const vec3 d = toVec3(b.position()[i] - reference[i]);
+                    if (mag(d - u[i]) > 1e-3*b.dp())
+                    {
+                        fatalError("Solid " + b.name() + ": particle id "
+                            + std::to_string(b.id()[i]) + " is displaced by "
+                            + str(u[i]) + " m in " + startTimeName + "/"
+                            + b.name() + "/displacement but by " + str(d)
+                            + " m from its position in " + initial + "/: "
+                            + initial + "/ is not the initial state of this"
+                              " run" + regenerated);
+                    }
+                }
             }
         }
 
@@ -192,7 +224,8 @@ solidBodySet::solidBodySet
     for (const solidBody& b : bodies_) solids += " " + b.name;
     for (const std::string& key : solidProperties.keys())
     {
-        const bool used = std::any_of(bodies_.begin(), bodies_.end(),
+        const bool used = solidProperties.findEntry(key)->usedAsVariable()
+          || std::any_of(bodies_.begin(), bodies_.end(),
             [&](const solidBody& b) { return b.name == key; });
         if (!used)
         {

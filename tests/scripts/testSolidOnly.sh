@@ -41,6 +41,11 @@ writeControl    adjustableRunTime;
 writeInterval   0.1;
 writeFormat     ascii;
 logInterval     10000;
+functions
+{
+    tip { type solidPoints; body beam; points ((0.595 0.005 0));
+          writeControl runTime; writeInterval 0.1; }
+}
 DICT
 
 generateParticles -case "$c" > "$scratch/log.gen" 2>&1
@@ -81,6 +86,46 @@ print("tip deflection %.6g m at x = %g, Timoshenko %.6g m (%+.3f %%)"
 sys.exit(0 if abs(w/ref - 1) < 0.03 else 1)
 PY
 
+# Function objects: solidPoints samples the solid alone, at the times of
+# its runTime control, the field's displacement of that particle.
+tip="$c/postProcessing/tip/0/displacement.dat"
+check "solidPoints: rows at 0, 0.1, 0.2 and 0.3" \
+    [ "$(awk '!/^#/ { printf "%s ", $1 }' "$tip")" = "0 0.1 0.2 0.3 " ]
+check "solidPoints: the last row is 0.3/beam/displacement of that particle" \
+python3 - "$c" "$tip" <<'PY'
+import re, sys
+c, tip = sys.argv[1:]
+def vec(f):
+    return [tuple(map(float, m)) for m in re.findall(
+        r'^\(([-\d.e+]+) ([-\d.e+]+) ([-\d.e+]+)\)$', open(f).read(), re.M)]
+X = vec(c + '/0/beam/position')
+U = vec(c + '/0.3/beam/displacement')
+i = min(range(len(X)), key=lambda k: (X[k][0] - 0.595)**2 + (X[k][1] - 0.005)**2)
+row = [float(v) for v in open(tip).read().split('\n')[-2].split()]
+print("sampled", row[1:], "field", U[i][:2])
+sys.exit(0 if row[2] < 0 and abs(row[1] - U[i][0]) <= 1e-9 + 1e-6*abs(U[i][0])
+         and abs(row[2] - U[i][1]) <= 1e-6*abs(U[i][1]) else 1)
+PY
+# A function object of the fluid is an error naming it; so is a device
+# that does not exist; stopAt applies as in the fluid loop.
+f="$scratch/fluidFunction"
+cp -r "$c" "$f"; rm -rf "$f"/0.* "$f/postProcessing"
+sed -i 's/^    tip {/    p { type probes; probeLocations ((0.3 0.1 0)); }\n&/' "$f/system/controlDict"
+sphVcpmFsi -case "$f" > "$scratch/log.fluidFunction" 2>&1
+check "probes with solids alone: exit status 1" [ $? -eq 1 ]
+expectIn "probes with solids alone: says why" "$scratch/log.fluidFunction" \
+    "Function object 'p' \(type probes\) samples the fluid, and this case has no fluid body"
+sed -i '/type probes/d' "$f/system/controlDict"
+sphVcpmFsi -case "$f" -device gpu > "$scratch/log.badDevice" 2>&1
+check "-device gpu with solids alone: exit status 1" [ $? -eq 1 ]
+expectIn "-device gpu with solids alone: says what is expected" "$scratch/log.badDevice" \
+    "device gpu: expected cpu, cuda or auto"
+sed -i 's/^stopAt .*/stopAt nextWrite;/' "$f/system/controlDict"
+sphVcpmFsi -case "$f" > "$scratch/log.nextWrite" 2>&1
+check "stopAt nextWrite with solids alone: exit 0" [ $? -eq 0 ]
+check "stopAt nextWrite with solids alone: stopped after writing 0.1" \
+    [ "$(cd "$f" && ls -d 0*)" = "$(printf '0\n0.1')" ]
+
 # Restarts of the solid alone get the fluid solver's checks: what an
 # interrupted write left is removed, a damaged time is refused.
 r="$scratch/restart"
@@ -114,6 +159,39 @@ sphVcpmFsi -case "$r" > "$scratch/log.badId" 2>&1
 check "restart with a particle not in 0/: exit status 1" [ $? -eq 1 ]
 expectIn "restart with a particle not in 0/: names it" "$scratch/log.badId" \
     "Solid beam: particle id 99999 of time 0.3 is not in 0/beam"
+
+# A variable of solidProperties ($E0) is neither an unknown keyword nor an
+# entry that names no solid.
+v="$scratch/variable"
+cp -r "$c" "$v"; rm -rf "$v"/0.* "$v/postProcessing"
+sed -i 's/^beam { rho 1000; E 1e8;/E0 1e8;\nbeam { rho 1000; E $E0;/' "$v/constant/solidProperties"
+sed -i 's/^endTime .*/endTime 0.01;/; s/^writeInterval .*/writeInterval 0.01;/' "$v/system/controlDict"
+sphVcpmFsi -case "$v" > "$scratch/log.variable" 2>&1
+check "a variable in solidProperties: the run ends" grep -q '^End' "$scratch/log.variable"
+check "a variable in solidProperties: no warning" bash -c "! grep -q Warning '$scratch/log.variable'"
+expectIn "a variable in solidProperties: E read through it" "$scratch/log.variable" "E = 1e\+08 Pa"
+
+# 0/ generated again after the run, with the solid changed: generateParticles
+# warns of the later times, and the restart is refused (a longer beam has
+# more particles; a shifted lattice the same number, displaced otherwise
+# than the restart's displacement field says).
+regenerated()   # regenerated <what> <sed expression> <pattern>
+{
+    local g="$scratch/regenerated"
+    rm -rf "$g"; cp -r "$c" "$g"
+    sed -i "$2" "$g/system/generateParticlesDict"
+    sed -i 's/^endTime .*/endTime 0.4;/' "$g/system/controlDict"
+    generateParticles -case "$g" > "$scratch/log.regenerated" 2>&1
+    expectIn "$1: generateParticles warns of the later times" "$scratch/log.regenerated" \
+        "The case has later time directories: 0.1 0.2 0.3\. The solver goes on from the latest"
+    sphVcpmFsi -case "$g" > "$scratch/log.regenerated" 2>&1
+    check "$1: restart refused (exit status 1)" [ $? -eq 1 ]
+    expectIn "$1: says why" "$scratch/log.regenerated" "$3"
+}
+regenerated "a longer beam" 's/max (0.6 0.03 1)/max (0.61 0.03 1)/' \
+    "Solid beam: time 0.3 has 372 particles and 0/beam 378: 0/ is not the initial state of this run"
+regenerated "a shifted lattice" 's/^dp .*/dp 0.01; latticeOrigin (0 0.002 0);/' \
+    "Solid beam: particle id 0 is displaced by \(.*\) m in 0.3/beam/displacement but by \(.*\) m from its position in 0/: 0/ is not the initial state"
 
 # A case started before 0 (the initial state in -0.1/, index 0): a 0/ of
 # generateParticles still there would be written over at t = 0, so the

@@ -74,6 +74,44 @@ expectIn "contact 0: the log says the push is off" "$scratch/c/log.solver" "cont
 
 # The time scheme: an unknown one, a non-positive verletSteps, and Verlet
 # with shifting (whose shift lives in the symplectic corrector).
+# A keyword of one type under another would be silently unused; the
+# dictionary form of artificial viscosity takes alpha's default as the word
+# form does.
+fresh; sed -i 's/^viscosity .*/viscosity { type laminar; alpha 0.1; }/' "$scratch/c/system/sphSchemes"
+expectFatal "alpha under laminar" "'alpha' applies to type artificial only; with type laminar it would have no effect" "sphSchemes"
+fresh; echo "timeScheme { type symplectic; verletSteps 20; }" >> "$scratch/c/system/sphSchemes"
+expectFatal "verletSteps under symplectic" "'verletSteps' applies to type verlet only" "sphSchemes"
+fresh; sed -i 's/^densityDiffusion .*/densityDiffusion { type none; delta 0.1; }/' "$scratch/c/system/sphSchemes"
+expectFatal "delta under none" "'delta' applies to type fourtakas or molteniColagrossi only" "sphSchemes"
+fresh; sed -i 's/^viscosity .*/viscosity { type artificial; }/' "$scratch/c/system/sphSchemes"
+(cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+expectIn "viscosity { type artificial; }: alpha 0.01 by default" "$scratch/c/log.solver" \
+    "viscosity artificial \(alpha 0.01\)"
+
+# A fixed step beyond the acoustic limit: a warning before the run, and a
+# blow-up diagnosis that points to deltaT, not to maxCo.
+fresh; sed -i 's/^deltaT .*/deltaT 2e-3;/; s/^adjustTimeStep .*/adjustTimeStep no;/' "$scratch/c/system/controlDict"
+expectFatal "a fixed step 25 times the acoustic limit" \
+    "adjustTimeStep no with deltaT 0.002 s, above the acoustic limit maxCo h/c0 = " \
+    "lower deltaT, or set adjustTimeStep yes"
+
+# Probes and gauges outside the domain read 0: a warning names them.
+fresh; sed -i '/^functions/,$d' "$scratch/c/system/controlDict"
+cat >> "$scratch/c/system/controlDict" <<'DICT'
+functions
+{
+    p { type probes; probeLocations ((3.45 0.01 0) (0.1 0.01 0)); }
+    h { type freeSurfaceGauges; locations ((0.1 0 0) (10 0 0)); }
+}
+DICT
+(cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+check "probes and gauges outside the domain: the run ends" grep -q '^End' "$scratch/c/log.solver"
+expectIn "a probe outside the domain: warned" "$scratch/c/log.solver" \
+    "Function object 'p': probe 0 at \(3.45 0.01 0\) is outside the domain .* it reads 0"
+expectIn "a gauge outside the domain: warned" "$scratch/c/log.solver" \
+    "Function object 'h': gauge 1 at \(10 0 0\) is outside the domain"
+check "points inside the domain: no warning" bash -c "! grep -qE \"probe 1|gauge 0 \" '$scratch/c/log.solver'"
+
 fresh; echo "timeScheme leapfrog;" >> "$scratch/c/system/sphSchemes"
 expectFatal "unknown time scheme" "leapfrog" "symplectic" "verlet" "sphSchemes"
 fresh; echo "timeScheme { type verlet; verletSteps 0; }" >> "$scratch/c/system/sphSchemes"
@@ -202,7 +240,11 @@ blowUpPair()    # blowUpPair <timeScheme>
     fresh
     sed -i 's/^adjustTimeStep .*/adjustTimeStep no;/; s/^deltaT .*/deltaT 0.004;/; s/^endTime .*/endTime 0.4;/; s/^writeControl .*/writeControl timeStep;/; s/^writeInterval .*/writeInterval 1000;/; s/^writeFormat .*/writeFormat ascii;/; s/^writePrecision .*/writePrecision 17;/' \
         "$scratch/c/system/controlDict"
-    echo "timeScheme { type $s; verletSteps 1; }" >> "$scratch/c/system/sphSchemes"
+    if [ "$s" = verlet ]; then
+        echo "timeScheme { type verlet; verletSteps 1; }" >> "$scratch/c/system/sphSchemes"
+    else
+        echo "timeScheme $s;" >> "$scratch/c/system/sphSchemes"
+    fi
     every="$scratch/blowUp.$s.every"
     rm -rf "$every"; cp -r "$scratch/c" "$every"
     sed -i 's/^writeInterval .*/writeInterval 1;/' "$every/system/controlDict"
@@ -252,6 +294,11 @@ expectIn "fluid crossing the domain bounds: removed and counted" "$scratch/c/log
     "^Removed [0-9]+ particles? of water that left the domain"
 expectIn "the run summary counts the removed particles" "$scratch/c/log.solver" \
     "water: [0-9]+ particles removed for leaving the domain"
+check "removals reported with the log lines, not one line each" \
+    [ "$(grep -c '^Removed ' "$scratch/c/log.solver")" -le "$(grep -c '^Time = ' "$scratch/c/log.solver")" ]
+check "the removals reported add up to the summary's count" \
+    awk '/^Removed / { n += $2 } /particles removed for leaving the domain/ { total = $2 }
+         END { exit !(n > 0 && n == total) }' "$scratch/c/log.solver"
 
 # A domain that leaves out wall particles: an error naming the particle
 # and the domain (a wall is never removed, as fluid leaving is).

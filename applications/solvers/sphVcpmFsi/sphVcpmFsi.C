@@ -10,6 +10,7 @@
 #include "cudaDevice.H"
 #include "error.H"
 #include "solidOnlySolver.H"
+#include "stopControl.H"
 #include "fsiSolver.H"
 
 #include <cstdlib>
@@ -22,8 +23,8 @@ int main(int argc, char* argv[])
     return runGuarded([&]()
     {
         argList args("sphVcpmFsi",
-            "Weakly compressible SPH solver for free-surface flow with"
-            " rigid walls");
+            "Weakly compressible SPH for free-surface flow between rigid"
+            " walls, coupled to elastic VCPM solids (or the solids alone)");
         args.addNote("Reads system/{controlDict,sphSchemes},"
             " constant/{fluidProperties,g} and the start time;\nwrites"
             " <time>/<body>/{position,U,rho,p,mass,id} and"
@@ -57,6 +58,12 @@ int main(int argc, char* argv[])
         const std::string startTime = startTimeName(args.casePath(), control);
         if (solidOnlySolver::applies(args.casePath(), startTime))
         {
+            if (device != "cpu" && device != "cuda" && device != "auto")
+            {
+                fatalError("device " + device + ": expected cpu, cuda or"
+                    " auto (from -device, $SPHVCPM_DEVICE or the device"
+                    " entry of system/controlDict)");
+            }
             if (device == "cuda")
             {
                 std::cout << "The case has no fluid: its solids run alone,"
@@ -73,6 +80,7 @@ int main(int argc, char* argv[])
         }
 
         std::cout << executionTimeLine() << "\n\nEnd\n" << std::endl;
+        stopControl::raiseCaughtSignal();
         return 0;
     });
 }

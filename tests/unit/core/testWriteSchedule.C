@@ -3,7 +3,8 @@
 \*---------------------------------------------------------------------------*/
 // The write schedule of both solvers' loops (libsrc/core/timeControl.H):
 // write times as multiples of writeInterval from any start (negative ones
-// too), the name of a second write at one time, purgeWrite, the
+// too) at their decimal values, the next write after a changed interval,
+// the name of a second write at one time, purgeWrite, the
 // writeInterval checks of each writeControl and the range checks of
 // controlDict's other entries.
 
@@ -121,6 +122,45 @@ TEST(writeSchedule, runTimeBelowTheStepWritesEveryStep)
         readControl(dir, "writeInterval 1e-300;\n");
     });
     test::expectMessage(err, {"writeInterval 1e-300 s is below minDeltaT"});
+}
+
+
+TEST(writeSchedule, writeTimesAreTheirDecimalValues)
+{
+    // 3*0.05 is 0.15000000000000002 in binary: the write lands on 0.15.
+    scratchDir dir;
+    const timeControl control =
+        readControl(dir, "writeInterval 0.05;\nendTime 0.3;\n");
+    writeSchedule schedule(control, 0);
+    double t = 0;
+    std::vector<double> landed;
+    while (t < control.endTime*(1 - 1e-12))
+    {
+        const double step = schedule.limitStep(t, 0.007);
+        t = schedule.landed() ? schedule.landingTime() : t + step;
+        if (schedule.due(t, 0))
+        {
+            landed.push_back(t);
+            schedule.written(t, schedule.writeName(t), "", "");
+        }
+    }
+    EXPECT_EQ(landed, (std::vector<double>{0.05, 0.1, 0.15, 0.2, 0.25, 0.3}));
+}
+
+
+TEST(writeSchedule, restartFindsTheNextWriteOfAChangedInterval)
+{
+    // controlDict read again at t = 0.23 with writeInterval 0.1 -> 0.04:
+    // the next write is 0.24, not 0.3.
+    scratchDir dir;
+    timeControl control = readControl(dir, "writeInterval 0.1;\n");
+    writeSchedule schedule(control, 0.2);   // written at 0.2: next 0.3
+    EXPECT_DOUBLE_EQ(schedule.limitStep(0.23, 1), 0.3 - 0.23);
+    control.writeInterval = 0.04;
+    schedule.restart(0.23);
+    EXPECT_DOUBLE_EQ(schedule.limitStep(0.23, 1), 0.24 - 0.23);
+    EXPECT_TRUE(schedule.landed());
+    EXPECT_EQ(schedule.landingTime(), 0.24);
 }
 
 

@@ -1,0 +1,215 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+#include "stopControl.H"
+#include "error.H"
+#include "formatting.H"
+
+#include <cstring>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace sphvcpm
+{
+
+namespace
+{
+
+volatile std::sig_atomic_t stopSignal = 0;
+
+extern "C" void onStopSignal(const int sig)
+{
+    stopSignal = sig;   // SA_RESETHAND: a second signal ends the process
+}
+
+
+// Keywords whose entries differ between two controlDicts (numbers by
+// value), in the order of b, then those only in a.
+std::vector<std::string> changedKeys(const dictionary& a, const dictionary& b)
+{
+    const auto only = [](const dictionary& d, const std::string& key)
+    {
+        dictionary one = d;
+        for (const std::string& k : d.keys())
+        {
+            if (k != key) one.remove(k);
+        }
+        return one;
+    };
+    std::vector<std::string> changed;
+    for (const std::string& k : b.keys())
+    {
+        if (!a.found(k) || only(a, k) != only(b, k)) changed.push_back(k);
+    }
+    for (const std::string& k : a.keys())
+    {
+        if (!b.found(k)) changed.push_back(k);
+    }
+    return changed;
+}
+
+} // End anonymous namespace
+
+
+stopControl::stopControl(timeControl& control, writeSchedule& schedule,
+                         const std::filesystem::path& caseDir,
+                         std::ostream& log)
+:
+    control_(control),
+    schedule_(schedule),
+    file_(caseDir/"system/controlDict"),
+    log_(log)
+{
+    stopSignal = 0;
+    struct sigaction sa{};
+    sa.sa_handler = onStopSignal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND;
+    // A signal ignored when the run started stays ignored: a background
+    // job of a script starts with SIGINT ignored and must not stop on the
+    // Ctrl-C meant for the foreground.
+    sigaction(SIGINT, nullptr, &previousInt_);
+    sigaction(SIGTERM, nullptr, &previousTerm_);
+    if (previousInt_.sa_handler != SIG_IGN) sigaction(SIGINT, &sa, nullptr);
+    if (previousTerm_.sa_handler != SIG_IGN) sigaction(SIGTERM, &sa, nullptr);
+}
+
+
+stopControl::~stopControl()
+{
+    sigaction(SIGINT, &previousInt_, nullptr);
+    sigaction(SIGTERM, &previousTerm_, nullptr);
+}
+
+
+stopAction stopControl::afterStep(const double time)
+{
+    if (stopSignal)
+    {
+        return stopAction::writeNow;
+    }
+    if (control_.runTimeModifiable)
+    {
+        std::error_code ec;
+        const auto modified = std::filesystem::last_write_time(file_, ec);
+        if (!ec && modified != control_.modified)
+        {
+            control_.modified = modified;
+            reread(time);
+        }
+    }
+    if (control_.stopAt == "writeNow") return stopAction::writeNow;
+    if (control_.stopAt == "noWriteNow") return stopAction::noWriteNow;
+    if (control_.stopAt == "nextWrite") return stopAction::nextWrite;
+    return stopAction::none;
+}
+
+
+void stopControl::reread(const double time)
+{
+    timeControl next;
+    try
+    {
+        next = timeControl::read(file_.parent_path().parent_path());
+    }
+    catch (const FatalError& e)
+    {
+        warning("system/controlDict changed at time " + str(time)
+            + " but cannot be read; the run goes on with the settings it"
+              " has:\n" + e.message(), e.file(), e.line());
+        return;
+    }
+
+    // What the loops read at every step (or write) applies now.
+    const std::vector<std::string> live{"endTime", "stopAt", "deltaT",
+        "adjustTimeStep", "maxCo", "maxDeltaT", "minDeltaT", "writeControl",
+        "writeInterval", "purgeWrite", "writeFormat", "writePrecision",
+        "writeCompression", "logInterval", "runTimeModifiable"};
+    std::string applied, later;
+    for (const std::string& k : changedKeys(control_.dict, next.dict))
+    {
+        bool isLive = false;
+        for (const std::string& l : live) isLive = isLive || l == k;
+        std::string& list = isLive ? applied : later;
+        list += (list.empty() ? "" : ", ") + k;
+    }
+    const bool scheduleChanged =
+        next.writeControl != control_.writeControl
+     || next.writeInterval != control_.writeInterval;
+    control_.endTime = next.endTime;
+    control_.stopAt = next.stopAt;
+    control_.deltaT = next.deltaT;
+    control_.adjustTimeStep = next.adjustTimeStep;
+    control_.maxCo = next.maxCo;
+    control_.maxDeltaT = next.maxDeltaT;
+    control_.minDeltaT = next.minDeltaT;
+    control_.writeControl = next.writeControl;
+    control_.writeInterval = next.writeInterval;
+    control_.purgeWrite = next.purgeWrite;
+    control_.writeFormatName = next.writeFormatName;
+    control_.writePrecision = next.writePrecision;
+    control_.logInterval = next.logInterval;
+    control_.runTimeModifiable = next.runTimeModifiable;
+    if (scheduleChanged)
+    {
+        schedule_.restart(time);
+    }
+
+    log_<< "system/controlDict changed at time " << schedule_.name(time);
+    if (!applied.empty())
+    {
+        log_<< ": now endTime " << str(control_.endTime)
+            << (time >= control_.endTime*(1 - 1e-12) ? " (reached)" : "")
+            << ", stopAt " << control_.stopAt << " (changed: " << applied
+            << ")";
+    }
+    else
+    {
+        log_<< ": nothing the run uses now";
+    }
+    if (!later.empty())
+    {
+        log_<< "; read at the next start: " << later;
+    }
+    log_<< "\n" << std::endl;
+}
+
+
+int stopControl::caughtSignal()
+{
+    return stopSignal;
+}
+
+
+void stopControl::raiseCaughtSignal()
+{
+    if (const int sig = stopSignal)
+    {
+        std::signal(sig, SIG_DFL);
+        std::raise(sig);
+    }
+}
+
+
+void stopControl::reportStop(const stopAction action, const double time)
+    const
+{
+    const std::string t = schedule_.name(time);
+    if (stopSignal)
+    {
+        log_<< "Stopped at time " << t << " on " << strsignal(stopSignal)
+            << ", time " << schedule_.lastWriteName()
+            << " written (startFrom latestTime goes on from it)\n"
+            << std::endl;
+        return;
+    }
+    log_<< "Stopped at time " << t << " by stopAt "
+        << (action == stopAction::writeNow ? "writeNow"
+          : action == stopAction::noWriteNow ? "noWriteNow" : "nextWrite")
+        << " in system/controlDict; the latest time written is "
+        << schedule_.lastWriteName()
+        << " (set stopAt endTime to go on)\n" << std::endl;
+}
+
+} // End namespace sphvcpm

@@ -1,0 +1,132 @@
+#!/bin/bash
+# Stopping and changing a run while it goes on (docs/solver.md, "Controlling
+# a run"), on the coarse dam break: stopAt writeNow, noWriteNow and
+# nextWrite; controlDict read again when it changes (a new endTime applies,
+# a startTime change is named as read at the next start, a controlDict that
+# no longer reads is a warning and the run goes on); SIGTERM and SIGINT
+# write the state and end the process by the signal, and the run goes on
+# from that state; runTimeModifiable no leaves a changed controlDict unread.
+source "$(dirname "$0")/testLib.sh"
+
+base="$scratch/base"
+cp -r "$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D" "$base"
+generateParticles -case "$base" > "$scratch/log.gen" 2>&1
+check "generateParticles" [ $? -eq 0 ]
+
+# newCase <name> <sed script>: a copy of the generated case with its
+# controlDict edited.
+newCase()
+{
+    rm -rf "$scratch/$1"
+    cp -r "$base" "$scratch/$1"
+    sed -i "$2" "$scratch/$1/system/controlDict"
+    echo "$scratch/$1"
+}
+
+# timeDirs <case>: its time directories, sorted by value, on one line.
+timeDirs()
+{
+    (cd "$1" && ls -d [0-9-]* 2>/dev/null | sort -g | tr '\n' ' ')
+}
+
+# waitFor <file> <pattern> <seconds>: until the pattern is in the file.
+waitFor()
+{
+    local i
+    for ((i = 0; i < $3*10; ++i)); do
+        grep -qE -- "$2" "$1" 2>/dev/null && return 0
+        sleep 0.1
+    done
+    return 1
+}
+
+# --- stopAt at the start ---------------------------------------------------
+c=$(newCase writeNow 's/^stopAt .*/stopAt writeNow;/')
+sphVcpmFsi -case "$c" > "$c/log" 2>&1
+check "writeNow: exit 0" [ $? -eq 0 ]
+t=$(sed -n 's/^Stopped at time \([^ ]*\) by stopAt writeNow.*/\1/p' "$c/log")
+check "writeNow: stopped after one step ($t)" grep -q "^Step = 1 " "$c/log"
+check "writeNow: wrote that step's time only" [ "$(timeDirs "$c")" = "0 $t " ]
+
+c=$(newCase noWriteNow 's/^stopAt .*/stopAt noWriteNow;/')
+sphVcpmFsi -case "$c" > "$c/log" 2>&1
+check "noWriteNow: exit 0" [ $? -eq 0 ]
+expectIn "noWriteNow: says why it stopped" "$c/log" \
+    "^Stopped at time .* by stopAt noWriteNow.*latest time written is 0 "
+check "noWriteNow: wrote nothing" [ "$(timeDirs "$c")" = "0 " ]
+
+c=$(newCase nextWrite 's/^stopAt .*/stopAt nextWrite;/; s/^writeInterval .*/writeInterval 0.01;/')
+sphVcpmFsi -case "$c" > "$c/log" 2>&1
+check "nextWrite: exit 0" [ $? -eq 0 ]
+check "nextWrite: stopped at the first write time" [ "$(timeDirs "$c")" = "0 0.01 " ]
+expectIn "nextWrite: says why it stopped" "$c/log" "^Stopped at time 0.01 by stopAt nextWrite"
+
+# --- controlDict changed during the run ------------------------------------
+c=$(newCase modified 's/^endTime .*/endTime 100;/; s/^writeInterval .*/writeInterval 10;/; s/^logInterval .*/logInterval 200;/')
+sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
+pid=$!
+check "modified: the loop runs" waitFor "$c/log" "^Time = " 60
+sed -i 's/^endTime .*/endTime -1;/' "$c/system/controlDict"
+check "modified: a controlDict that does not read is a warning" \
+    waitFor "$c/log" "controlDict changed at time .* cannot be read" 30
+check "modified: the run goes on" kill -0 $pid
+sed -i 's/^endTime .*/endTime 1e-9;/; s/^startTime .*/startTime 0.5;/' "$c/system/controlDict"
+wait $pid
+check "modified: exit 0 once the new endTime is reached" [ $? -eq 0 ]
+expectIn "modified: the new endTime applies" "$c/log" \
+    "controlDict changed at time .*: now endTime 1e-09 \(reached\), stopAt endTime \(changed: endTime\); read at the next start: startTime"
+last=$(sed -n 's/^Writing time //p' "$c/log" | tail -1)
+check "modified: wrote where it stopped ($last)" [ "$(timeDirs "$c")" = "0 $last " ]
+expectIn "modified: End" "$c/log" "^End"
+
+c=$(newCase notModifiable 's/^endTime .*/endTime 0.5;/; s/^writeInterval .*/writeInterval 0.05;/; s/^logInterval .*/logInterval 200;/; s/^stopAt .*/stopAt endTime; runTimeModifiable no;/')
+sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
+pid=$!
+waitFor "$c/log" "^Time = " 60
+sed -i 's/^stopAt .*/stopAt noWriteNow; runTimeModifiable no;/' "$c/system/controlDict"
+wait $pid
+check "runTimeModifiable no: exit 0" [ $? -eq 0 ]
+check "runTimeModifiable no: controlDict not read again" \
+    bash -c "! grep -q 'controlDict changed' '$c/log'"
+check "runTimeModifiable no: ran to endTime" [ -d "$c/0.5" ]
+
+# --- signals ---------------------------------------------------------------
+# signalStop <name> <signal> <exit status>: a long run stopped by the
+# signal writes its state, ends by the signal, and goes on from it.
+signalStop()
+{
+    local c pid rc t
+    c=$(newCase "$1" 's/^endTime .*/endTime 100;/; s/^writeInterval .*/writeInterval 10;/; s/^logInterval .*/logInterval 200;/')
+    # A background job of a script has SIGINT ignored, and the solver keeps
+    # it so (nohup): start it with the default action.
+    python3 -c 'import os, signal, sys
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+os.execvp(sys.argv[1], sys.argv[1:])' sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
+    pid=$!
+    check "$1: the loop runs" waitFor "$c/log" "^Time = " 60
+    kill -s "$2" $pid
+    wait $pid
+    rc=$?
+    check "$1: ends by the signal (exit $rc)" [ $rc -eq "$3" ]
+    t=$(sed -n 's/^Stopped at time \([^ ]*\) on .*, time \([^ ]*\) written.*/\2/p' "$c/log")
+    check "$1: wrote the state where it stopped ($t)" [ -n "$t" ] && [ "$(timeDirs "$c")" = "0 $t " ]
+    expectIn "$1: the log says how to go on" "$c/log" "startFrom latestTime goes on from it"
+    expectIn "$1: the run summary is printed" "$c/log" "^Run summary: "
+    sed -i "s/^endTime .*/endTime $(python3 -c "print($t + 0.002)");/" "$c/system/controlDict"
+    sphVcpmFsi -case "$c" > "$c/log.restart" 2>&1
+    check "$1: goes on from $t" [ $? -eq 0 ]
+    expectIn "$1: read the stopped state" "$c/log.restart" "^Reading time $t"
+}
+signalStop sigterm TERM 143
+signalStop sigint INT 130
+
+# A background job with SIGINT ignored keeps ignoring it.
+c=$(newCase ignored 's/^endTime .*/endTime 0.1;/; s/^writeInterval .*/writeInterval 0.05;/; s/^logInterval .*/logInterval 200;/')
+sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
+pid=$!
+waitFor "$c/log" "^Time = " 60
+kill -s INT $pid
+wait $pid
+check "an ignored SIGINT stays ignored: ran to endTime" [ $? -eq 0 ] && [ -d "$c/0.1" ]
+
+finish
