@@ -5,6 +5,8 @@
 #include "error.H"
 #include "formatting.H"
 
+#include <atomic>
+#include <chrono>
 #include <cstring>
 #include <ostream>
 #include <string>
@@ -16,12 +18,20 @@ namespace sphvcpm
 namespace
 {
 
-volatile std::sig_atomic_t stopSignal = 0;
+// Lock-free, so safe in a handler, which may run on any thread.
+std::atomic<int> stopSignal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void onStopSignal(const int sig)
 {
     stopSignal = sig;   // SA_RESETHAND: a second signal ends the process
 }
+
+// controlDict is looked at once a second at most (a stat per step would
+// load a parallel file system's metadata server), and read once it is
+// this old (an editor may still be writing it).
+constexpr std::chrono::milliseconds checkInterval{1000};
+constexpr std::chrono::milliseconds modificationSkew{500};
 
 
 // Keywords whose entries differ between two controlDicts (numbers by
@@ -65,7 +75,8 @@ stopControl::stopControl(timeControl& control, writeSchedule& schedule,
     struct sigaction sa{};
     sa.sa_handler = onStopSignal;
     sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND;
+    // SA_RESTART: a write to the log that the signal interrupts goes on.
+    sa.sa_flags = SA_RESETHAND | SA_RESTART;
     // A signal ignored when the run started stays ignored: a background
     // job of a script starts with SIGINT ignored and must not stop on the
     // Ctrl-C meant for the foreground.
@@ -89,14 +100,20 @@ stopAction stopControl::afterStep(const double time)
     {
         return stopAction::writeNow;
     }
-    if (control_.runTimeModifiable)
+    const auto now = std::chrono::steady_clock::now();
+    if (control_.runTimeModifiable && now >= nextCheck_)
     {
+        nextCheck_ = now + checkInterval;
         std::error_code ec;
         const auto modified = std::filesystem::last_write_time(file_, ec);
-        if (!ec && modified != control_.modified)
+        if
+        (
+            !ec && modified != control_.modified && modified != unreadable_
+         && std::filesystem::file_time_type::clock::now() - modified
+            >= modificationSkew
+        )
         {
-            control_.modified = modified;
-            reread(time);
+            reread(time, modified);
         }
     }
     if (control_.stopAt == "writeNow") return stopAction::writeNow;
@@ -106,7 +123,8 @@ stopAction stopControl::afterStep(const double time)
 }
 
 
-void stopControl::reread(const double time)
+void stopControl::reread(const double time,
+                         const std::filesystem::file_time_type modified)
 {
     timeControl next;
     try
@@ -115,6 +133,8 @@ void stopControl::reread(const double time)
     }
     catch (const FatalError& e)
     {
+        // Said once: read again when it changes next.
+        unreadable_ = modified;
         warning("system/controlDict changed at time " + str(time)
             + " but cannot be read; the run goes on with the settings it"
               " has:\n" + e.message(), e.file(), e.line());
@@ -125,7 +145,7 @@ void stopControl::reread(const double time)
     const std::vector<std::string> live{"endTime", "stopAt", "deltaT",
         "adjustTimeStep", "maxCo", "maxDeltaT", "minDeltaT", "writeControl",
         "writeInterval", "purgeWrite", "writeFormat", "writePrecision",
-        "writeCompression", "logInterval", "runTimeModifiable"};
+        "logInterval", "runTimeModifiable"};
     std::string applied, later;
     for (const std::string& k : changedKeys(control_.dict, next.dict))
     {
@@ -151,9 +171,13 @@ void stopControl::reread(const double time)
     control_.writePrecision = next.writePrecision;
     control_.logInterval = next.logInterval;
     control_.runTimeModifiable = next.runTimeModifiable;
+    control_.modified = next.modified;
+    // The next change is told against this one.
+    control_.dict = std::move(next.dict);
     if (scheduleChanged)
     {
-        schedule_.restart(time);
+        // A write time of the new interval at this very step is kept.
+        schedule_.restart(time, true);
     }
 
     log_<< "system/controlDict changed at time " << schedule_.name(time);

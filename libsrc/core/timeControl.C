@@ -168,10 +168,12 @@ writeSchedule::writeSchedule(const timeControl& control,
 }
 
 
-void writeSchedule::restart(const double startTime)
+void writeSchedule::restart(const double startTime, const bool atTimeToo)
 {
     const timeControl& control = control_;
-    nextIndex_ = std::floor(startTime/control.writeInterval + 1e-9) + 1;
+    nextIndex_ = atTimeToo
+      ? std::ceil(startTime/control.writeInterval - 1e-9)
+      : std::floor(startTime/control.writeInterval + 1e-9) + 1;
     next_ = decimalTime(nextIndex_*control.writeInterval);
     if (!std::isfinite(next_))
     {

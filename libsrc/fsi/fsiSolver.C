@@ -132,14 +132,13 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         const double acoustic = control_.maxCo*model_.h/model_.c0;
         if (control_.deltaT > acoustic)
         {
+            const entry& deltaT = control_.dict.lookupEntry("deltaT");
             warning("adjustTimeStep no with deltaT " + str(control_.deltaT)
                 + " s, above the acoustic limit maxCo h/c0 = "
                 + str(acoustic) + " s (maxCo " + str(control_.maxCo) + ", h "
                 + str(model_.h) + " m, c0 " + str(model_.c0) + " m/s): the"
                 " run is likely to blow up. Lower deltaT or set"
-                " adjustTimeStep yes",
-                (caseDir_/"system/controlDict").string(),
-                control_.dict.lookupEntry("deltaT").line());
+                " adjustTimeStep yes", deltaT.file(), deltaT.line());
         }
     }
     if (model_.timeScheme == timeSchemeType::verlet)
@@ -718,6 +717,7 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
                        const bool undoPredictor, const bool undoCorrector,
                        const scalar dt)
 {
+    reportRemoved();
     std::ostringstream msg;
     msg << "The run blew up at time " << str(time_, 10) << " (step "
         << timeIndex_ + 1 << "): particle " << describeParticle(particle)
@@ -1020,6 +1020,7 @@ void fsiSolver::run()
         }
         if (stopNow)
         {
+            finishWrite();   // before the log says it is written
             stop.reportStop(action, time_);
             break;
         }

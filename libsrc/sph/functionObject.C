@@ -5,6 +5,7 @@
 #include "functionObjects.H"
 #include "error.H"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -199,7 +200,11 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
             continue;
         }
         const std::string type = dict.get<std::string>("type");
-        if (!hasFluid && type != "solidPoints")
+        if
+        (
+            !hasFluid && type != "solidPoints"
+         && std::find(types.begin(), types.end(), type) != types.end()
+        )
         {
             dict.fatalAt("type", "Function object '" + name + "' (type "
                 + type + ") samples the fluid, and this case has no fluid"

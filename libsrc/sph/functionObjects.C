@@ -82,22 +82,42 @@ bool nearGrid(const cellGrid& g, const point& x, const scalar r)
     return true;
 }
 
-// A point outside the domain (most often a typo) reads 0 at every sample:
-// said once, at the first.
+// A probe beyond the support of the domain, or a gauge whose line up from
+// its base misses it (most often a typo), reads 0 at every sample: said
+// once, at the first. up: none for probes.
 void warnOutsideDomain(const std::string& name, const std::string& what,
-                       const std::vector<vec3>& points, const cellGrid& g)
+                       const std::vector<vec3>& points, const cellGrid& g,
+                       const scalar support, const vec3& up = vec3{0, 0, 0})
 {
     const vec3 lo = toVec3(g.origin);
     const vec3 hi = lo + g.cellSize*vec3{scalar(g.nx), scalar(g.ny),
                                          scalar(g.nz)};
     for (std::size_t k = 0; k < points.size(); ++k)
     {
-        if (!nearGrid(g, toPoint(points[k]), 0))
+        // The ray points[k] + t up, t >= 0 (a point alone for probes),
+        // against the box grown by the support, axis by axis.
+        double tMin = 0, tMax = mag(up) > 0 ? 1e300 : 0;
+        for (int d = 0; d < 3; ++d)
+        {
+            const double a = lo[d] - support, b = hi[d] + support;
+            const double x = points[k][d], u = up[d];
+            if (u == 0)
+            {
+                if (x < a || x > b) tMax = -1;
+                continue;
+            }
+            const double t1 = (a - x)/u, t2 = (b - x)/u;
+            tMin = std::max(tMin, std::min(t1, t2));
+            tMax = std::min(tMax, std::max(t1, t2));
+        }
+        const bool meets = tMin <= tMax;
+        if (!meets)
         {
             warning("Function object '" + name + "': " + what + " "
                 + std::to_string(k) + " at " + str(points[k], 10)
-                + " is outside the domain " + str(lo) + " to " + str(hi)
-                + ", where there is no fluid: it reads 0");
+                + (mag(up) > 0 ? ": its line up" : "") + " is outside the"
+                " domain " + str(lo) + " to " + str(hi) + ", where there"
+                " is no fluid: it reads 0");
         }
     }
 }
@@ -253,7 +273,8 @@ std::vector<scalar> probes::values(const solverSnapshot& s) const
 {
     if (!checked_)
     {
-        warnOutsideDomain(name(), "probe", locations_, s.cells.grid);
+        warnOutsideDomain(name(), "probe", locations_, s.cells.grid,
+                          2*s.model.h);
         checked_ = true;
     }
     std::vector<scalar> p(locations_.size(), 0);
@@ -322,7 +343,8 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
 {
     if (!checked_)
     {
-        warnOutsideDomain(name(), "gauge", locations_, s.cells.grid);
+        warnOutsideDomain(name(), "gauge", locations_, s.cells.grid, 0,
+                          up_);
         checked_ = true;
     }
     std::vector<scalar> heights(locations_.size(), 0);

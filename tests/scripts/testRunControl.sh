@@ -40,6 +40,21 @@ waitFor()
     return 1
 }
 
+# waitExit <pid> <seconds>: the process's exit status, or 124 (and the
+# process killed) when it is still running after that long.
+waitExit()
+{
+    local i
+    for ((i = 0; i < $2*10; ++i)); do
+        kill -0 "$1" 2>/dev/null || break
+        sleep 0.1
+    done
+    if kill -0 "$1" 2>/dev/null; then
+        kill -9 "$1"; wait "$1" 2>/dev/null; return 124
+    fi
+    wait "$1"
+}
+
 # --- stopAt at the start ---------------------------------------------------
 c=$(newCase writeNow 's/^stopAt .*/stopAt writeNow;/')
 sphVcpmFsi -case "$c" > "$c/log" 2>&1
@@ -71,7 +86,7 @@ check "modified: a controlDict that does not read is a warning" \
     waitFor "$c/log" "controlDict changed at time .* cannot be read" 30
 check "modified: the run goes on" kill -0 $pid
 sed -i 's/^endTime .*/endTime 1e-9;/; s/^startTime .*/startTime 0.5;/' "$c/system/controlDict"
-wait $pid
+waitExit $pid 60
 check "modified: exit 0 once the new endTime is reached" [ $? -eq 0 ]
 expectIn "modified: the new endTime applies" "$c/log" \
     "controlDict changed at time .*: now endTime 1e-09 \(reached\), stopAt endTime \(changed: endTime\); read at the next start: startTime"
@@ -79,16 +94,18 @@ last=$(sed -n 's/^Writing time //p' "$c/log" | tail -1)
 check "modified: wrote where it stopped ($last)" [ "$(timeDirs "$c")" = "0 $last " ]
 expectIn "modified: End" "$c/log" "^End"
 
-c=$(newCase notModifiable 's/^endTime .*/endTime 0.5;/; s/^writeInterval .*/writeInterval 0.05;/; s/^logInterval .*/logInterval 200;/; s/^stopAt .*/stopAt endTime; runTimeModifiable no;/')
+c=$(newCase notModifiable 's/^endTime .*/endTime 1;/; s/^writeInterval .*/writeInterval 0.05;/; s/^logInterval .*/logInterval 200;/; s/^stopAt .*/stopAt endTime; runTimeModifiable no;/')
 sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
 pid=$!
 waitFor "$c/log" "^Time = " 60
 sed -i 's/^stopAt .*/stopAt noWriteNow; runTimeModifiable no;/' "$c/system/controlDict"
-wait $pid
+sleep 2
+check "runTimeModifiable no: still running 2 s after the change" kill -0 $pid
+waitExit $pid 300
 check "runTimeModifiable no: exit 0" [ $? -eq 0 ]
 check "runTimeModifiable no: controlDict not read again" \
     bash -c "! grep -q 'controlDict changed' '$c/log'"
-check "runTimeModifiable no: ran to endTime" [ -d "$c/0.5" ]
+check "runTimeModifiable no: ran to endTime" [ -d "$c/1" ]
 
 # --- signals ---------------------------------------------------------------
 # signalStop <name> <signal> <exit status>: a long run stopped by the
@@ -105,11 +122,11 @@ os.execvp(sys.argv[1], sys.argv[1:])' sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
     pid=$!
     check "$1: the loop runs" waitFor "$c/log" "^Time = " 60
     kill -s "$2" $pid
-    wait $pid
+    waitExit $pid 60
     rc=$?
     check "$1: ends by the signal (exit $rc)" [ $rc -eq "$3" ]
     t=$(sed -n 's/^Stopped at time \([^ ]*\) on .*, time \([^ ]*\) written.*/\2/p' "$c/log")
-    check "$1: wrote the state where it stopped ($t)" [ -n "$t" ] && [ "$(timeDirs "$c")" = "0 $t " ]
+    check "$1: wrote the state where it stopped ($t)" [ -n "$t" -a "$(timeDirs "$c")" = "0 $t " ]
     expectIn "$1: the log says how to go on" "$c/log" "startFrom latestTime goes on from it"
     expectIn "$1: the run summary is printed" "$c/log" "^Run summary: "
     sed -i "s/^endTime .*/endTime $(python3 -c "print($t + 0.002)");/" "$c/system/controlDict"
@@ -121,12 +138,13 @@ signalStop sigterm TERM 143
 signalStop sigint INT 130
 
 # A background job with SIGINT ignored keeps ignoring it.
-c=$(newCase ignored 's/^endTime .*/endTime 0.1;/; s/^writeInterval .*/writeInterval 0.05;/; s/^logInterval .*/logInterval 200;/')
+c=$(newCase ignored 's/^endTime .*/endTime 0.6;/; s/^writeInterval .*/writeInterval 0.3;/; s/^logInterval .*/logInterval 200;/')
 sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
 pid=$!
 waitFor "$c/log" "^Time = " 60
-kill -s INT $pid
-wait $pid
-check "an ignored SIGINT stays ignored: ran to endTime" [ $? -eq 0 ] && [ -d "$c/0.1" ]
+check "an ignored SIGINT: running when it is sent" kill -s INT $pid
+waitExit $pid 300
+check "an ignored SIGINT stays ignored: exit 0" [ $? -eq 0 ]
+check "an ignored SIGINT stays ignored: ran to endTime" [ -d "$c/0.6" ]
 
 finish

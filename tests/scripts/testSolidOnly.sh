@@ -115,7 +115,12 @@ sphVcpmFsi -case "$f" > "$scratch/log.fluidFunction" 2>&1
 check "probes with solids alone: exit status 1" [ $? -eq 1 ]
 expectIn "probes with solids alone: says why" "$scratch/log.fluidFunction" \
     "Function object 'p' \(type probes\) samples the fluid, and this case has no fluid body"
-sed -i '/type probes/d' "$f/system/controlDict"
+sed -i 's/^    p { type probes;/    p { type solidPoint;/' "$f/system/controlDict"
+sphVcpmFsi -case "$f" > "$scratch/log.fluidFunction" 2>&1
+check "a misspelt type with solids alone: exit status 1" [ $? -eq 1 ]
+expectIn "a misspelt type with solids alone: says it is unknown" "$scratch/log.fluidFunction" \
+    "Function object 'p': unknown type 'solidPoint'"
+sed -i '/type solidPoint;/d' "$f/system/controlDict"
 sphVcpmFsi -case "$f" -device gpu > "$scratch/log.badDevice" 2>&1
 check "-device gpu with solids alone: exit status 1" [ $? -eq 1 ]
 expectIn "-device gpu with solids alone: says what is expected" "$scratch/log.badDevice" \

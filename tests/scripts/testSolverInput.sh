@@ -101,7 +101,7 @@ cat >> "$scratch/c/system/controlDict" <<'DICT'
 functions
 {
     p { type probes; probeLocations ((3.45 0.01 0) (0.1 0.01 0)); }
-    h { type freeSurfaceGauges; locations ((0.1 0 0) (10 0 0)); }
+    h { type freeSurfaceGauges; locations ((0.1 -5 0) (10 0 0)); }
 }
 DICT
 (cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
@@ -109,8 +109,8 @@ check "probes and gauges outside the domain: the run ends" grep -q '^End' "$scra
 expectIn "a probe outside the domain: warned" "$scratch/c/log.solver" \
     "Function object 'p': probe 0 at \(3.45 0.01 0\) is outside the domain .* it reads 0"
 expectIn "a gauge outside the domain: warned" "$scratch/c/log.solver" \
-    "Function object 'h': gauge 1 at \(10 0 0\) is outside the domain"
-check "points inside the domain: no warning" bash -c "! grep -qE \"probe 1|gauge 0 \" '$scratch/c/log.solver'"
+    "Function object 'h': gauge 1 at \(10 0 0\): its line up is outside the domain"
+check "points inside the domain, or a gauge below it whose line up crosses it: no warning" bash -c "! grep -qE \"probe 1|gauge 0 \" '$scratch/c/log.solver'"
 
 fresh; echo "timeScheme leapfrog;" >> "$scratch/c/system/sphSchemes"
 expectFatal "unknown time scheme" "leapfrog" "symplectic" "verlet" "sphSchemes"

@@ -164,6 +164,23 @@ TEST(writeSchedule, restartFindsTheNextWriteOfAChangedInterval)
 }
 
 
+TEST(writeSchedule, aChangedIntervalKeepsAWriteAtThatStep)
+{
+    // writeInterval 0.1 -> 0.05 read at t = 0.2, just landed on: the
+    // write of 0.2 is kept (restart at that time, atTimeToo).
+    scratchDir dir;
+    timeControl control = readControl(dir, "writeInterval 0.1;\n");
+    writeSchedule schedule(control, 0.1);
+    schedule.limitStep(0.15, 0.05);
+    ASSERT_TRUE(schedule.landed());
+    control.writeInterval = 0.05;
+    schedule.restart(0.2, true);
+    EXPECT_TRUE(schedule.due(0.2, 7));
+    schedule.written(0.2, "0.2", "", "");
+    EXPECT_DOUBLE_EQ(schedule.limitStep(0.2, 1), 0.05);
+}
+
+
 TEST(timeControl, outOfRangeEntriesAreErrorsNamingTheKeyword)
 {
     scratchDir dir("schedule");
