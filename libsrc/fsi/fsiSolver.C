@@ -664,6 +664,13 @@ void fsiSolver::reportSubCycling()
 double fsiSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
                                const scalar maxVel2)
 {
+    // The largest fluid speed of the run, for its Mach number (summary).
+    if (maxVel2 > maxSpeed2_)
+    {
+        maxSpeed2_ = maxVel2;
+        maxSpeedTime_ = time_;
+    }
+
     // The step is bookkeeping (double); the limits come from the physics.
     double dt = control_.deltaT;
     if (control_.adjustTimeStep)
@@ -1056,6 +1063,12 @@ void fsiSolver::run()
             << " GiB of " << str(info.totalMemory/1073741824.0, 4)
             << " GiB (" << info.name << ")\n";
     }
+    // Weak compressibility errs in density by about Ma^2 (theory §5.2).
+    const double maxSpeed = std::sqrt(double(maxSpeed2_));
+    log_<< "    largest fluid speed " << str(maxSpeed, 4) << " m/s (time "
+        << schedule_->name(maxSpeedTime_) << "): Mach "
+        << str(maxSpeed/model_.c0, 3) << " against c0 = " << str(model_.c0, 4)
+        << " m/s\n";
     if (coupling_)
     {
         log_<< "    solids: " << coupling_->size() << " particles, "
