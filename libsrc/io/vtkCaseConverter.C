@@ -68,7 +68,9 @@ void vtkCaseConverter::restrictFields(const std::vector<std::string>& fields,
 
     for (const auto& name : fields)
     {
-        if (!present.count(name))
+        // stress: the solids' tensor, read from its component fields.
+        if (!present.count(name) && !(name == "stress"
+                                      && present.count("stressXX")))
         {
             std::string timeList, fieldList;
             for (const auto& t : times)
@@ -87,6 +89,18 @@ void vtkCaseConverter::restrictFields(const std::vector<std::string>& fields,
 
     restricted_ = true;
     fields_ = fields;
+    if (std::find(fields_.begin(), fields_.end(), "stress") != fields_.end())
+    {
+        for (const char* c : {"stressXX", "stressYY", "stressZZ", "stressXY",
+                              "stressYZ", "stressXZ"})
+        {
+            if (present.count(c)
+             && std::find(fields_.begin(), fields_.end(), c) == fields_.end())
+            {
+                fields_.push_back(c);
+            }
+        }
+    }
     if (std::find(fields_.begin(), fields_.end(), "id") == fields_.end())
     {
         fields_.push_back("id");

@@ -7,6 +7,7 @@
 #include "error.H"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -193,6 +194,46 @@ void writeVtp(const std::filesystem::path& file, const particleBody& body,
                     body.labelField(name)));
                 break;
         }
+    }
+
+    // A solid's stress components also as one symmetric tensor, in VTK's
+    // order XX YY ZZ XY YZ XZ, for ParaView's tensor filters (principal
+    // stresses, glyphs); the components a 2D body has no field for are 0.
+    const bool wantStress = fields.empty()
+        || std::find(fields.begin(), fields.end(), "stress") != fields.end();
+    if (wantStress && body.hasField("stressXX")
+     && body.kindOf("stressXX") == fieldKind::scalarField)
+    {
+        std::array<const std::vector<scalar>*, 6> parts{};
+        const char* order[6] = {"stressXX", "stressYY", "stressZZ",
+                                "stressXY", "stressYZ", "stressXZ"};
+        for (int c = 0; c < 6; ++c)
+        {
+            if (body.hasField(order[c])
+             && body.kindOf(order[c]) == fieldKind::scalarField)
+            {
+                parts[c] = &body.scalarField(order[c]);
+            }
+        }
+        pointData.push_back({"stress", scalarType, 6, n*6*sizeof(scalar),
+            [parts, n](std::ostream& os)
+            {
+                std::vector<scalar> buf;
+                for (std::uint64_t start = 0; start < n; start += chunkSize)
+                {
+                    const std::uint64_t end = std::min<std::uint64_t>(n,
+                        start + chunkSize);
+                    buf.clear();
+                    for (std::uint64_t i = start; i < end; ++i)
+                    {
+                        for (const auto* p : parts)
+                        {
+                            buf.push_back(p ? (*p)[i] : scalar(0));
+                        }
+                    }
+                    writeRaw(os, buf.data(), buf.size()*sizeof(scalar));
+                }
+            }});
     }
 
     // Positions are points, double in both builds.

@@ -86,6 +86,37 @@ print("tip deflection %.6g m at x = %g, Timoshenko %.6g m (%+.3f %%)"
 sys.exit(0 if abs(w/ref - 1) < 0.03 else 1)
 PY
 
+# particlesToVTK also writes the solid's stress as one symmetric tensor
+# (XX YY ZZ XY YZ XZ, for ParaView's tensor filters), equal to the
+# component fields; 2D has no ZZ, YZ, XZ: 0. -fields '(stress)' takes it.
+for fields in "" "(stress)"; do
+    rm -rf "$c/VTK"
+    particlesToVTK -case "$c" -latestTime ${fields:+-fields "$fields"} > "$scratch/log.vtk" 2>&1
+    check "particlesToVTK ${fields:-(all fields)}: exit 0" [ $? -eq 0 ]
+    check "particlesToVTK ${fields:-(all fields)}: stress is the tensor of the components" \
+python3 - "$c"/VTK/beam/*.vtp <<'PY'
+import re, struct, sys
+data = open(sys.argv[1], 'rb').read()
+head, raw = data.split(b'<AppendedData encoding="raw">', 1)
+raw = raw[raw.index(b'_') + 1:]
+arrays = {}
+for m in re.finditer(rb'<DataArray type="(\w+)" Name="(\w+)" NumberOfComponents="(\d+)"'
+                     rb' format="appended" offset="(\d+)"', head):
+    kind, name, nc, off = m.group(1).decode(), m.group(2).decode(), int(m.group(3)), int(m.group(4))
+    size = struct.unpack_from('<Q', raw, off)[0]
+    fmt = {'Float64': 'd', 'Float32': 'f', 'Int32': 'i', 'Int64': 'q'}[kind]
+    arrays[name] = (nc, struct.unpack_from('<%d%s' % (size//struct.calcsize(fmt), fmt), raw, off + 8))
+nc, t = arrays['stress']
+xx, xy, yy = (arrays[k][1] for k in ('stressXX', 'stressXY', 'stressYY'))
+n = len(xx)
+ok = nc == 6 and len(t) == 6*n and n > 0 and max(abs(v) for v in xx) > 0
+for i in range(n):
+    ok = ok and t[6*i:6*i + 6] == (xx[i], yy[i], 0, xy[i], 0, 0)
+print("stress: %d components, %d particles, %s" % (nc, n, "equal" if ok else "DIFFERENT"))
+sys.exit(0 if ok else 1)
+PY
+done
+
 # Function objects: solidPoints samples the solid alone, at the times of
 # its runTime control, the field's displacement of that particle.
 tip="$c/postProcessing/tip/0/displacement.dat"
