@@ -615,7 +615,7 @@ const entry& dictionary::lookupEntry(const std::string& key) const
     fatalIOError(file_, line_, "Keyword '" + key + "' is undefined in "
         "dictionary \"" + name_ + "\"."
         + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
-        + " Valid keywords are: " + dictionaryDetail::listWords(present),
+        + " Keywords present: " + dictionaryDetail::listWords(present),
         key);
 }
 

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
+#include <ctime>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -20,11 +21,33 @@ namespace
 
 // Lock-free, so safe in a handler, which may run on any thread.
 std::atomic<int> stopSignal{0};
-static_assert(std::atomic<int>::is_always_lock_free);
+std::atomic<long long> firstSignalNs{0};
+static_assert(std::atomic<int>::is_always_lock_free
+           && std::atomic<long long>::is_always_lock_free);
 
+long long monotonicNs()
+{
+    timespec t{};
+    clock_gettime(CLOCK_MONOTONIC, &t);   // async-signal-safe
+    return t.tv_sec*1000000000LL + t.tv_nsec;
+}
+
+// The first signal asks for a stop. One within a second of it is the same
+// request delivered twice (timeout signals the child, then its process
+// group; a terminal's Ctrl-C reaches every process of the job); a later
+// one ends the process at once.
 extern "C" void onStopSignal(const int sig)
 {
-    stopSignal = sig;   // SA_RESETHAND: a second signal ends the process
+    const long long now = monotonicNs();
+    int none = 0;
+    if (stopSignal.compare_exchange_strong(none, sig))
+    {
+        firstSignalNs = now;
+        return;
+    }
+    if (now - firstSignalNs < 1000000000LL) return;
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
 }
 
 // controlDict is looked at once a second at most (a stat per step would
@@ -76,7 +99,7 @@ stopControl::stopControl(timeControl& control, writeSchedule& schedule,
     sa.sa_handler = onStopSignal;
     sigemptyset(&sa.sa_mask);
     // SA_RESTART: a write to the log that the signal interrupts goes on.
-    sa.sa_flags = SA_RESETHAND | SA_RESTART;
+    sa.sa_flags = SA_RESTART;
     // A signal ignored when the run started stays ignored: a background
     // job of a script starts with SIGINT ignored and must not stop on the
     // Ctrl-C meant for the foreground.

@@ -12,6 +12,7 @@
 #include "withKernel.H"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <future>
 #include <cmath>
@@ -259,6 +260,7 @@ void fsiSolver::readStartTime()
     deltaT0_ = state.deltaT > 0 ? state.deltaT : control_.deltaT;
 
     clearInterruptedWrites(caseDir_, log_);
+    warnUnreadConstantFiles(caseDir_);
     log_<< "Reading time " << startTimeName_ << "\n";
     std::vector<particleBody> bodies =
         readTimeDirectory(caseDir_, startTimeName_);
@@ -428,13 +430,85 @@ void fsiSolver::placeMovingWalls()
         // A fresh case is generated in the reference configuration; a
         // restart's walls are already where their motion puts them.
         const rigidTransform T = motions_.of(b)->transform(time_);
+        scalar moved = 0;
         for (label i = 0; i < particles_.size(); ++i)
         {
             if (particles_.body[i] != b) continue;
             point& x = particles_.position[i];
-            if (freshStart_) x = T.apply(x);
+            if (freshStart_)
+            {
+                const point to = T.apply(x);
+                moved = std::max(moved, mag(toVec3(to - x)));
+                x = to;
+            }
             particles_.velocity[i] = T.velocityAtPosition(x);
         }
+        if (moved > 0) checkStartOverlap(b, moved);
+    }
+}
+
+
+void fsiSolver::checkStartOverlap(const std::size_t wall, const scalar moved)
+{
+    // The fluid was generated around the wall's reference position: a
+    // motion already under way at the start time puts the wall into it,
+    // which then bursts out (Mach above 1 in a piston flume).
+    const scalar dpWall = bodies_[wall].dp;
+    scalar cell = dpWall;
+    for (const bodyInfo& b : bodies_) cell = std::max(cell, b.dp);
+    const auto key = [cell](const point& x)
+    {
+        return std::array<long long, 3>{
+            (long long)std::floor(x.x/cell), (long long)std::floor(x.y/cell),
+            (long long)std::floor(x.z/cell)};
+    };
+    std::map<std::array<long long, 3>, std::vector<label>> bins;
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        if (particles_.body[i] == wall)
+        {
+            bins[key(particles_.position[i])].push_back(i);
+        }
+    }
+    label nClose = 0;
+    scalar nearest = vGreat;
+    std::string fluidName;
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        if (particles_.kind[i] != fluidKind) continue;
+        const point& x = particles_.position[i];
+        const scalar gap = 0.5*(bodies_[particles_.body[i]].dp + dpWall);
+        const auto k = key(x);
+        scalar d2 = vGreat;
+        for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz)
+        {
+            const auto it = bins.find({k[0] + dx, k[1] + dy, k[2] + dz});
+            if (it == bins.end()) continue;
+            for (const label j : it->second)
+            {
+                d2 = std::min(d2, magSqr(toVec3(x - particles_.position[j])));
+            }
+        }
+        if (d2 < 0.25*gap*gap)
+        {
+            ++nClose;
+            nearest = std::min(nearest, std::sqrt(d2));
+            fluidName = bodies_[particles_.body[i]].name;
+        }
+    }
+    if (nClose > 0)
+    {
+        warning("Wall " + bodies_[wall].name + " is moved " + str(moved)
+            + " m by its motion at the start time " + str(time_) + " (from"
+            " where generateParticles put it), into the fluid: "
+            + std::to_string(nClose) + " particles of " + fluidName
+            + " lie closer to it than half the contact gap (the nearest "
+            + str(nearest) + " m). They will burst out at the first steps."
+            " Start the motion at its reference position (0 at the start"
+            " time), or generate the particles where it starts",
+            (caseDir_/"constant/motion").string());
     }
 }
 
@@ -492,13 +566,18 @@ void fsiSolver::setSoundSpeed()
 
     // Weak compressibility needs c0 >= 10 U; the largest speed expected is
     // the case's speedSystem, else the free-fall speed over the fluid
-    // height, or the initial speed if larger.
-    const scalar uExpected = std::max(speedGiven
-        ? model_.speedSystem : std::sqrt(2*gMag*fluidHeight_), std::sqrt(u2));
+    // height, or the initial speed if larger. A restart weighs the flow as
+    // read (and speedSystem): the scene was weighed at the run's start, and
+    // its height now (a tilted tank) says nothing new.
+    const scalar uScene = speedGiven ? model_.speedSystem
+      : freshStart_ ? std::sqrt(2*gMag*fluidHeight_) : 0;
+    const scalar uExpected = std::max(uScene, std::sqrt(u2));
     const scalar c0Min = 10*uExpected;
     if (model_.c0 < 3*uExpected)
     {
-        const std::string reaches = speedGiven
+        const std::string reaches = uScene < std::sqrt(u2)
+          ? "the fluid moves at up to " + str(uExpected) + " m/s"
+          : speedGiven
           ? "the fluid reaches about " + str(uExpected) + " m/s (speedSystem)"
           : "the fluid (height " + str(fluidHeight_) + " m) reaches about "
             + str(uExpected) + " m/s";
@@ -547,6 +626,83 @@ void fsiSolver::setHydrostaticDensity()
 }
 
 
+namespace
+{
+
+void grow(point& lo, point& hi, const point& x)
+{
+    for (int d = 0; d < 3; ++d)
+    {
+        lo[d] = std::min(lo[d], x[d]);
+        hi[d] = std::max(hi[d], x[d]);
+    }
+}
+
+} // End anonymous namespace
+
+
+void fsiSolver::growByMotions(point& lo, point& hi)
+{
+    // Moving bodies: their box wherever their motion takes them up to
+    // endTime (the box's corners moved, sampled in time).
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+    {
+        if (!motions_.of(b)) continue;
+        point blo{vGreat, vGreat, vGreat}, bhi = -blo;
+        for (label i = 0; i < particles_.size(); ++i)
+        {
+            if (particles_.body[i] != b) continue;
+            grow(blo, bhi, particles_.position[i]);
+        }
+        const int nSamples = 2000;
+        for (int k = 0; k <= nSamples; ++k)
+        {
+            const double t = time_
+              + (control_.endTime - time_)*double(k)/nSamples;
+            const bodyMove m = motions_.move(b, time_, t);
+            for (int c = 0; c < 8; ++c)
+            {
+                const point corner{c & 1 ? bhi.x : blo.x,
+                    c & 2 ? bhi.y : blo.y, c & 4 ? bhi.z : blo.z};
+                grow(lo, hi, m.moved(corner));
+            }
+        }
+    }
+}
+
+
+void fsiSolver::checkMotionsInDomain()
+{
+    // endTime raised while the run goes on: the domain was sized for the
+    // motions up to the old one, and cannot grow now.
+    motionsCheckedUntil_ = control_.endTime;
+    bool anyMotion = false;
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+    {
+        anyMotion = anyMotion || motions_.of(b);
+    }
+    if (!anyMotion) return;
+    if (gpu_) gpuToHost();
+    point lo{vGreat, vGreat, vGreat}, hi = -lo;
+    growByMotions(lo, hi);
+    for (int d = 0; d < model_.nDimensions; ++d)
+    {
+        if (lo[d] < model_.domainMin[d] || hi[d] > model_.domainMax[d])
+        {
+            warning("With endTime " + str(control_.endTime) + " the moving"
+                " bodies leave the domain " + str(model_.domainMin) + " to "
+                + str(model_.domainMax) + ", which was sized for their"
+                " motion up to endTime " + str(domainEndTime_) + " when the run"
+                " started: the run stops when a wall particle leaves it. To"
+                " go on past that, stop the run (stopAt writeNow) and start"
+                " it again from its latest time, which sizes the domain"
+                " anew");
+            return;
+        }
+    }
+}
+
+
 void fsiSolver::setDomain(const bool onGpu)
 {
     point lo, hi;
@@ -559,42 +715,10 @@ void fsiSolver::setDomain(const bool onGpu)
     {
         // Bounding box of all particles with a margin; against gravity the
         // box doubles, so that splashes are not lost.
-        const auto grow = [](point& l, point& h, const point& x)
-        {
-            for (int d = 0; d < 3; ++d)
-            {
-                l[d] = std::min(l[d], x[d]);
-                h[d] = std::max(h[d], x[d]);
-            }
-        };
         lo = point{vGreat, vGreat, vGreat};
         hi = -lo;
         for (const point& x : particles_.position) grow(lo, hi, x);
-        // Moving bodies: their box wherever their motion takes them up to
-        // endTime (the box's corners moved, sampled in time).
-        for (std::size_t b = 0; b < bodies_.size(); ++b)
-        {
-            if (!motions_.of(b)) continue;
-            point blo{vGreat, vGreat, vGreat}, bhi = -blo;
-            for (label i = 0; i < particles_.size(); ++i)
-            {
-                if (particles_.body[i] != b) continue;
-                grow(blo, bhi, particles_.position[i]);
-            }
-            const int nSamples = 2000;
-            for (int k = 0; k <= nSamples; ++k)
-            {
-                const double t = time_
-                  + (control_.endTime - time_)*double(k)/nSamples;
-                const bodyMove m = motions_.move(b, time_, t);
-                for (int c = 0; c < 8; ++c)
-                {
-                    const point corner{c & 1 ? bhi.x : blo.x,
-                        c & 2 ? bhi.y : blo.y, c & 4 ? bhi.z : blo.z};
-                    grow(lo, hi, m.moved(corner));
-                }
-            }
-        }
+        growByMotions(lo, hi);
         const scalar gMag = mag(model_.g);
         for (int d = 0; d < model_.nDimensions; ++d)
         {
@@ -621,6 +745,7 @@ void fsiSolver::setDomain(const bool onGpu)
                          model_.nDimensions);
     model_.domainMin = toVec3(lo);
     model_.domainMax = toVec3(hi);
+    domainEndTime_ = motionsCheckedUntil_ = control_.endTime;
 }
 
 
@@ -993,6 +1118,7 @@ void fsiSolver::run()
         }
 
         const stopAction action = stop.afterStep(time_);
+        if (control_.endTime > motionsCheckedUntil_) checkMotionsInDomain();
         const bool atEnd = time_ >= control_.endTime*(1 - 1e-12);
         const auto outputStart = std::chrono::steady_clock::now();
         bool wrote = false;

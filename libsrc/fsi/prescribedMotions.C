@@ -24,9 +24,10 @@ prescribedMotions::prescribedMotions
 {
     if (set_.empty()) return;
 
-    std::vector<std::string> allowed;
+    std::vector<std::string> allowed, all;
     for (const particleBody& b : bodies)
     {
+        all.push_back(b.name());
         bool clamps = false;
         if (b.type() == bodyType::solid && b.hasField("clamped"))
         {
@@ -37,7 +38,7 @@ prescribedMotions::prescribedMotions
             allowed.push_back(b.name());
         }
     }
-    set_.checkBodies(allowed, withWalls
+    set_.checkBodies(allowed, all, withWalls
         ? "a wall body or a solid body with clamped particles"
         : "a solid body with clamped particles (solids alone: walls are"
           " ignored)");

@@ -62,6 +62,7 @@ solidOnlySolver::solidOnlySolver
     const bool freshStart = state.index == 0;
 
     clearInterruptedWrites(caseDir_, log_);
+    warnUnreadConstantFiles(caseDir_);
     log_<< "Reading time " << startTimeName_ << " (solids alone: no fluid"
         << " body)\n";
     const std::vector<particleBody> start =

@@ -2,6 +2,7 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 #include "startState.H"
+#include "dictionaryParser.H"
 #include "dictionary.H"
 #include "error.H"
 #include "timeName.H"
@@ -19,6 +20,32 @@ void clearInterruptedWrites(const fs::path& caseDir, std::ostream& log)
     for (const std::string& left : removeInterruptedWrites(caseDir))
     {
         log << "Removed " << left << ", left by an interrupted write\n";
+    }
+}
+
+
+void warnUnreadConstantFiles(const fs::path& caseDir)
+{
+    const std::vector<std::string> read{"fluidProperties", "solidProperties",
+        "g", "motion"};
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(caseDir/"constant", ec))
+    {
+        if (!e.is_regular_file()) continue;
+        const std::string name = e.path().filename().string();
+        if (std::find(read.begin(), read.end(), name) != read.end()) continue;
+        std::string meant = dictionaryDetail::closest(name, read);
+        if (name == "dynamicMeshDict" || name == "dynamicMotionSolverDict")
+        {
+            meant = "motion";
+        }
+        if (!meant.empty())
+        {
+            warning("constant/" + name + " is not read: did you mean"
+                " constant/" + meant + "? (docs/"
+                + (meant == "motion" ? "motion.md" : "solver.md") + ")",
+                e.path().string());
+        }
     }
 }
 

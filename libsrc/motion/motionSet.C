@@ -4,6 +4,7 @@
 #include "motionSet.H"
 
 #include "dictionary.H"
+#include "dictionaryParser.H"
 #include "error.H"
 
 #include <algorithm>
@@ -153,6 +154,7 @@ std::vector<std::string> motionSet::bodies() const
 void motionSet::checkBodies
 (
     const std::vector<std::string>& allowed,
+    const std::vector<std::string>& all,
     const std::string& what
 ) const
 {
@@ -160,6 +162,15 @@ void motionSet::checkBodies
     {
         for (const std::string& body : m.bodies)
         {
+            if (std::find(all.begin(), all.end(), body) == all.end())
+            {
+                const std::string near =
+                    dictionaryDetail::closest(body, all);
+                fatalIOError(m.file, m.line, "Keyword 'bodies' of motion "
+                    + m.name + ": the case has no body " + body
+                    + (near.empty() ? "" : " (did you mean " + near + "?)")
+                    + "; its bodies are " + listNames(all), "bodies");
+            }
             if (std::find(allowed.begin(), allowed.end(), body)
              == allowed.end())
             {

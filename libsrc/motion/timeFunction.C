@@ -161,14 +161,18 @@ timeFunction timeFunction::read
         scale = units == "degrees" ? pi/180 : 1;
     }
 
+    // Dimensions, where written, are checked: an offset is a length, an
+    // angle a number in its units.
+    const dimensionSet valueDims =
+        isAngle ? dimensions::none() : dimensions::length();
     if (type == "constant")
     {
         f.type_ = kind::constant;
-        f.constant_ = scale*dict.get<scalar>("value");
+        f.constant_ = scale*dict.getDimensioned<scalar>("value", valueDims);
     }
     else if (type == "sinusoid")
     {
-        f.readSinusoid(dict, scale);
+        f.readSinusoid(dict, scale, valueDims);
     }
     else
     {
@@ -178,11 +182,12 @@ timeFunction timeFunction::read
 }
 
 
-void timeFunction::readSinusoid(const dictionary& dict, const scalar scale)
+void timeFunction::readSinusoid(const dictionary& dict, const scalar scale,
+                                const dimensionSet& valueDims)
 {
     type_ = kind::sinusoid;
 
-    amplitude_ = scale*dict.get<scalar>("amplitude");
+    amplitude_ = scale*dict.getDimensioned<scalar>("amplitude", valueDims);
 
     const bool hasPeriod = dict.found("period");
     const bool hasFrequency = dict.found("frequency");
@@ -197,7 +202,8 @@ void timeFunction::readSinusoid(const dictionary& dict, const scalar scale)
             " period (s) or frequency (Hz)", "period");
     }
     const std::string key = hasPeriod ? "period" : "frequency";
-    const scalar given = dict.get<scalar>(key);
+    const scalar given = dict.getDimensioned<scalar>(key, hasPeriod
+        ? dimensions::time() : dimensionSet(0, 0, -1));
     if (!(given > 0))
     {
         dict.fatalAt(key, "Keyword '" + key + "' in dictionary \""
@@ -206,9 +212,21 @@ void timeFunction::readSinusoid(const dictionary& dict, const scalar scale)
     }
     omega_ = hasPeriod ? 2*pi/given : 2*pi*given;
 
-    phase_ = dict.getOrDefault<scalar>("phase", 0);
-    startTime_ = dict.getOrDefault<scalar>("startTime", 0);
-    rampTime_ = dict.getOrDefault<scalar>("rampTime", 0);
+    phase_ = dict.found("phase")
+      ? dict.getDimensioned<scalar>("phase", dimensions::none()) : 0;
+    if (std::abs(phase_) > 2*pi)
+    {
+        // Most often degrees meant (units applies to the amplitude only).
+        const entry& e = *dict.findEntry("phase");
+        warning("Keyword 'phase' in dictionary \"" + dict.name() + "\": "
+            + numberText(phase_) + " is in radians, more than a turn; for "
+            + numberText(phase_) + " degrees write "
+            + numberText(phase_*pi/180), e.file(), e.line());
+    }
+    startTime_ = dict.found("startTime")
+      ? dict.getDimensioned<scalar>("startTime", dimensions::time()) : 0;
+    rampTime_ = dict.found("rampTime")
+      ? dict.getDimensioned<scalar>("rampTime", dimensions::time()) : 0;
     if (!(rampTime_ >= 0))
     {
         dict.fatalAt("rampTime", "Keyword 'rampTime' in dictionary \""

@@ -22,6 +22,12 @@
 #    accelerated tank as a whole, not that term alone.
 # 4. Bad input: a 2D motion about an axis out of the plane, and a motion of
 #    a solid body with no clamped particle, each a clear error.
+# 5. What users write by mistake, each a clear error or warning: a motion
+#    already under way at the start time (the wall moved into the fluid), a
+#    misspelt constant/motions, a body the case has not, dimensions of the
+#    wrong kind, a phase in degrees; endTime raised during the run past
+#    what the domain was sized for (a warning at once, an error saying to
+#    restart when the tank leaves it; the restart runs on).
 source "$(dirname "$0")/testLib.sh"
 source "$(dirname "$0")/fieldTools.sh"
 
@@ -93,6 +99,15 @@ check "still water: levels within 1 dp of each other throughout (worst $worst m)
     python3 -c "import sys; sys.exit(0 if $worst < 0.01 else 1)"
 check "still water: the level is the still level (h0 = $h0 m, 0.1 m at rest)" \
     python3 -c "import sys; sys.exit(0 if abs(0.5*($h0 + $h1) - 0.1) < 0.01 else 1)"
+# A restart of the tilted tank weighs c0 against the flow as read, not the
+# tilted water's height (which would call for a c0 the start did not).
+r="$scratch/stillWaterRestart"
+cp -r "$c" "$r"
+sed -i 's/^endTime .*/endTime 4.01;/' "$r/system/controlDict"
+sphVcpmFsi -case "$r" > "$scratch/log.waterRestart" 2>&1
+check "still water: the restart runs" grep -q '^End' "$scratch/log.waterRestart"
+check "still water: the restart at 10 degrees gives no speed-of-sound warning" \
+    bash -c "! grep -q 'speed of sound' '$scratch/log.waterRestart'"
 
 # 2. A clamped strip turned rigidly by 90 degrees
 c="$scratch/strip"
@@ -229,4 +244,52 @@ sphVcpmFsi -case "$bad" > "$scratch/log.badBody" 2>&1
 check "motion of an unclamped solid: non-zero exit" [ $? -ne 0 ]
 expectIn "motion of an unclamped solid: names the body and what can move" \
     "$scratch/log.badBody" "strip is not a solid body with clamped particles"
+
+# 5. Mistakes: one step of the still-water tank each (stopAt writeNow).
+mistake()   # mistake <what> <sed expression on constant/motion> <pattern> [status]
+{
+    local m="$scratch/mistake"
+    rm -rf "$m"; cp -r "$scratch/stillWater" "$m"
+    rm -rf "$m"/[1-9]* "$m"/0.* "$m/postProcessing"
+    sed -i 's/^stopAt .*/stopAt writeNow;/' "$m/system/controlDict"
+    sed -i "$2" "$m/constant/motion"
+    sphVcpmFsi -case "$m" > "$scratch/log.mistake" 2>&1
+    check "$1: exit status ${4:-0}" [ $? -eq "${4:-0}" ]
+    expectIn "$1: says so" "$scratch/log.mistake" "$3"
+}
+mistake "a tank tilted 10 degrees at the start" \
+    's/angle   { .* }/angle   { type constant; value 10; units degrees; }/' \
+    "Wall tank is moved 0.0[0-9]+ m by its motion at the start time 0 .*, into the fluid: [0-9]+ particles of water lie closer to it than half the contact gap"
+mistake "a body the case has not" 's/bodies  (tank);/bodies  (tnk);/' \
+    "the case has no body tnk \\(did you mean tank\\?\\)" 1
+mistake "a period in metres" 's/period 16;/period [m] 16;/' "period" 1
+mistake "a phase of 90 with units degrees" 's/rampTime 4;/rampTime 4; phase 90;/' \
+    "Keyword 'phase' .*: 90 is in radians, more than a turn; for 90 degrees write 1.5707"
+m="$scratch/mistake"; mv "$m/constant/motion" "$m/constant/motions"
+rm -rf "$m"/0.*
+sphVcpmFsi -case "$m" > "$scratch/log.mistake" 2>&1
+expectIn "constant/motions: not read, and said" "$scratch/log.mistake" \
+    "constant/motions is not read: did you mean constant/motion\\?"
+
+# endTime raised during the accelerated tank's run past its domain.
+m="$scratch/raisedEndTime"
+cp -r "$scratch/accelerated" "$m"; rm -rf "$m"/[1-9]* "$m"/0.* "$m/postProcessing"
+sed -i 's/^endTime .*/endTime 1;/; s/^logInterval .*/logInterval 100;/' "$m/system/controlDict"
+sphVcpmFsi -case "$m" > "$scratch/log.raised" 2>&1 &
+pid=$!
+for ((i = 0; i < 600; ++i)); do grep -q "^Time = " "$scratch/log.raised" && break; sleep 0.1; done
+sed -i 's/^endTime .*/endTime 4;/' "$m/system/controlDict"
+for ((i = 0; i < 1200; ++i)); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+kill -9 $pid 2>/dev/null
+wait $pid
+check "endTime raised during the run: the tank leaves the domain, exit 1" [ $? -eq 1 ]
+expectIn "endTime raised during the run: warns at once that the tank will leave the domain" \
+    "$scratch/log.raised" "With endTime 4 the moving bodies leave the domain .* sized for their motion up to endTime 1 when the run started"
+expectIn "endTime raised during the run: the error says how to go on" \
+    "$scratch/log.raised" "Wall particle .* lies outside the domain bounds .*, which were sized at the start for its motion up to endTime 1: start the run again from its latest time"
+r="$scratch/raisedRestart"
+cp -r "$m" "$r"
+sed -i 's/^endTime .*/endTime 1.2;/' "$r/system/controlDict"
+sphVcpmFsi -case "$r" > "$scratch/log.raisedRestart" 2>&1
+check "endTime raised: the restart sizes the domain anew and runs on" grep -q '^End' "$scratch/log.raisedRestart"
 finish

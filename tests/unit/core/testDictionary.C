@@ -700,7 +700,7 @@ TEST(dictionaryLookup, missingKeywordSuggestsClosest)
     expectError(err, file, 0,
         {"Keyword 'endTime' is undefined in dictionary \"" + file + "\"",
          "Did you mean 'endTme'?",
-         "Valid keywords are: (application startTime endTme deltaT sub)"});
+         "Keywords present: (application startTime endTme deltaT sub)"});
     EXPECT_EQ(err.keyword(), "endTime");
 
     // In a sub-dictionary: its scoped name and the line of its brace.
@@ -715,7 +715,7 @@ TEST(dictionaryLookup, missingKeywordSuggestsClosest)
     // Nothing close: no suggestion, still the list.
     const auto far = catchFatal([&]{ d.subDict("solvers"); });
     EXPECT_EQ(far.message().find("Did you mean"), std::string::npos);
-    EXPECT_NE(far.message().find("Valid keywords are: ("), std::string::npos);
+    EXPECT_NE(far.message().find("Keywords present: ("), std::string::npos);
 
     // A value asked for as a sub-dictionary, and the other way round.
     expectError(catchFatal([&]{ d.subDict("deltaT"); }), file, 4,

@@ -271,13 +271,24 @@ TEST(motionSet, rollingTank)
     EXPECT_NEAR(shake.position({0, 0, 0}, 1.125).x, 0.01, 1e-15);
 
     // The caller says which bodies may move.
-    set.checkBodies({"tank", "plate", "gate", "fluid"}, "a wall or solid");
+    const std::vector<std::string> all{"tank", "plate", "gate", "fluid"};
+    set.checkBodies({"tank", "plate", "gate", "fluid"}, all, "a wall or solid");
     const FatalError err = test::catchFatal([&]
     {
-        set.checkBodies({"tank", "gate"}, "a wall body or a clamped solid");
+        set.checkBodies({"tank", "gate"}, all,
+                        "a wall body or a clamped solid");
     });
     test::expectError(err, (dir.path()/"constant/motion").string(), 4,
         {"plate", "a wall body or a clamped solid", "(tank gate)"});
+    // A body the case does not have: the closest name.
+    const FatalError missing = test::catchFatal([&]
+    {
+        set.checkBodies({"tank", "plates", "gate"}, {"tank", "plates", "gate"},
+                        "a wall body or a clamped solid");
+    });
+    test::expectError(missing, (dir.path()/"constant/motion").string(), 4,
+        {"the case has no body plate", "did you mean plates?",
+         "(tank plates gate)"});
 
     EXPECT_TRUE(motionSet::readIfPresent(dir.path()/"nowhere").empty());
 }
