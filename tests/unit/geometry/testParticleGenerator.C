@@ -192,6 +192,9 @@ TEST(particleGenerator, exampleCase)
     EXPECT_EQ(std::size_t(water.size()), 1200 - nHole);
     EXPECT_EQ(gate.type(), bodyType::solid);
     EXPECT_EQ(tank.type(), bodyType::wall);
+    // The water's nodes half a spacing from the tank's faces: its first
+    // layer at the contact gap.
+    EXPECT_LT(gen.summaries()[2].gapExcess, 1e-6);
     EXPECT_EQ(water.type(), bodyType::fluid);
 
     expectFields(gate, {0, 0, 0}, 2700);
@@ -282,11 +285,21 @@ TEST(particleGenerator, fluidOverlappingSolid)
                     "min (0.5 0.0047 0); max (0.53 0.2 0);");
     testCase c(dict);
     particleGenerator gen(c.path());
+    testing::internal::CaptureStderr();
     gen.generate();
+    const std::string err = testing::internal::GetCapturedStderr();
     const particleBody& gate = bodyNamed(gen, "gate");
     const particleBody& tank = bodyNamed(gen, "tank");
     const particleBody& water = bodyNamed(gen, "water");
     const scalar dmin = 0.01*(1 - 1e-6);
+    // The gate's faces between the water's nodes: the water's first layer
+    // stands off the contact gap (0.31 dp left of the gate, 0.69 dp right
+    // of it), which the generator says.
+    EXPECT_GT(gen.summaries()[2].gapExcess,
+              particleGenerator::gapExcessWarned);
+    EXPECT_LT(gen.summaries()[2].gapExcess, 1);
+    EXPECT_NE(err.find("Fluid body 'water': its first layer of particles"
+                       " stands on average"), std::string::npos) << err;
     EXPECT_GE(minDistance(water, gate), dmin);
     EXPECT_GE(minDistance(water, tank), dmin);
     EXPECT_GE(minDistance(tank, gate), dmin);
