@@ -32,8 +32,8 @@ long long monotonicNs()
     return t.tv_sec*1000000000LL + t.tv_nsec;
 }
 
-// The first signal asks for a stop. One within a second of it is the same
-// request delivered twice (timeout signals the child, then its process
+// The first signal asks for a stop. One within a second of it (SIGINT or
+// SIGTERM) is taken as the same request delivered twice (timeout signals the child, then its process
 // group; a terminal's Ctrl-C reaches every process of the job); a later
 // one ends the process at once.
 extern "C" void onStopSignal(const int sig)
@@ -45,7 +45,8 @@ extern "C" void onStopSignal(const int sig)
         firstSignalNs = now;
         return;
     }
-    if (now - firstSignalNs < 1000000000LL) return;
+    const long long first = firstSignalNs;   // 0: being set just now
+    if (first == 0 || now - first < 1000000000LL) return;
     std::signal(sig, SIG_DFL);
     std::raise(sig);
 }
@@ -95,9 +96,14 @@ stopControl::stopControl(timeControl& control, writeSchedule& schedule,
     log_(log)
 {
     stopSignal = 0;
+    firstSignalNs = 0;
     struct sigaction sa{};
     sa.sa_handler = onStopSignal;
+    // The other stop signal waits while the handler runs (the two would
+    // otherwise race on the first signal's time).
     sigemptyset(&sa.sa_mask);
+    sigaddset(&sa.sa_mask, SIGINT);
+    sigaddset(&sa.sa_mask, SIGTERM);
     // SA_RESTART: a write to the log that the signal interrupts goes on.
     sa.sa_flags = SA_RESTART;
     // A signal ignored when the run started stays ignored: a background

@@ -21,6 +21,7 @@
 #include <map>
 #include <ostream>
 #include <sstream>
+#include <unordered_map>
 
 namespace sphvcpm
 {
@@ -462,7 +463,16 @@ void fsiSolver::checkStartOverlap(const std::size_t wall, const scalar moved)
             (long long)std::floor(x.x/cell), (long long)std::floor(x.y/cell),
             (long long)std::floor(x.z/cell)};
     };
-    std::map<std::array<long long, 3>, std::vector<label>> bins;
+    struct keyHash
+    {
+        std::size_t operator()(const std::array<long long, 3>& k) const
+        {
+            return std::hash<long long>()(k[0]*73856093LL ^ k[1]*19349663LL
+                                          ^ k[2]*83492791LL);
+        }
+    };
+    std::unordered_map<std::array<long long, 3>, std::vector<label>, keyHash>
+        bins;
     for (label i = 0; i < particles_.size(); ++i)
     {
         if (particles_.body[i] == wall)
@@ -491,7 +501,8 @@ void fsiSolver::checkStartOverlap(const std::size_t wall, const scalar moved)
                 d2 = std::min(d2, magSqr(toVec3(x - particles_.position[j])));
             }
         }
-        if (d2 < 0.25*gap*gap)
+        // generateParticles keeps the fluid at the gap or beyond.
+        if (d2 < 0.81*gap*gap)
         {
             ++nClose;
             nearest = std::min(nearest, std::sqrt(d2));
@@ -504,7 +515,7 @@ void fsiSolver::checkStartOverlap(const std::size_t wall, const scalar moved)
             + " m by its motion at the start time " + str(time_) + " (from"
             " where generateParticles put it), into the fluid: "
             + std::to_string(nClose) + " particles of " + fluidName
-            + " lie closer to it than half the contact gap (the nearest "
+            + " lie closer to it than the contact gap (the nearest "
             + str(nearest) + " m). They will burst out at the first steps."
             " Start the motion at its reference position (0 at the start"
             " time), or generate the particles where it starts",
@@ -566,11 +577,14 @@ void fsiSolver::setSoundSpeed()
 
     // Weak compressibility needs c0 >= 10 U; the largest speed expected is
     // the case's speedSystem, else the free-fall speed over the fluid
-    // height, or the initial speed if larger. A restart weighs the flow as
-    // read (and speedSystem): the scene was weighed at the run's start, and
-    // its height now (a tilted tank) says nothing new.
+    // height, or the initial speed if larger. A restart with the c0 it ran
+    // with weighs the flow as read (and speedSystem): the scene was weighed
+    // at the run's start, and its height now (a tilted tank) says nothing
+    // new. A c0 changed since is weighed against the scene again.
+    const bool sameC0 = !freshStart_ && restartC0_ > 0
+                     && model_.c0 == restartC0_;
     const scalar uScene = speedGiven ? model_.speedSystem
-      : freshStart_ ? std::sqrt(2*gMag*fluidHeight_) : 0;
+      : sameC0 ? 0 : std::sqrt(2*gMag*fluidHeight_);
     const scalar uExpected = std::max(uScene, std::sqrt(u2));
     const scalar c0Min = 10*uExpected;
     if (model_.c0 < 3*uExpected)
@@ -681,7 +695,7 @@ void fsiSolver::checkMotionsInDomain()
     {
         anyMotion = anyMotion || motions_.of(b);
     }
-    if (!anyMotion) return;
+    if (!anyMotion || model_.userDomain) return;
     if (gpu_) gpuToHost();
     point lo{vGreat, vGreat, vGreat}, hi = -lo;
     growByMotions(lo, hi);

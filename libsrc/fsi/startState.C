@@ -8,6 +8,7 @@
 #include "timeName.H"
 
 #include <algorithm>
+#include <cctype>
 #include <ostream>
 
 namespace sphvcpm
@@ -34,7 +35,18 @@ void warnUnreadConstantFiles(const fs::path& caseDir)
         if (!e.is_regular_file()) continue;
         const std::string name = e.path().filename().string();
         if (std::find(read.begin(), read.end(), name) != read.end()) continue;
-        std::string meant = dictionaryDetail::closest(name, read);
+        // Copies kept beside (fluidProperties.orig, motion~) are no typos,
+        // nor is every short name one letter from g.
+        const bool copy = std::any_of(read.begin(), read.end(),
+            [&](const std::string& r)
+            {
+                return name.rfind(r, 0) == 0 && name.size() > r.size()
+                    && !std::isalpha(static_cast<unsigned char>(
+                           name[r.size()]));
+            });
+        if (copy) continue;
+        std::string meant = name.size() > 2
+          ? dictionaryDetail::closest(name, read) : std::string();
         if (name == "dynamicMeshDict" || name == "dynamicMotionSolverDict")
         {
             meant = "motion";

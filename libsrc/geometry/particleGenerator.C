@@ -536,7 +536,8 @@ void particleGenerator::generate()
                 nNearSolid = nNodes - nodes.size();
             }
             const scalar gapExcess = type == bodyType::fluid
-              ? interfaceGapExcess(nodes, spec, obstacleBodies) : 0;
+              ? interfaceGapExcess(nodes, spec, obstacleBodies, obstacles)
+              : 0;
             if (nNearSolid)
             {
                 // A solid inside a wall would be pushed by nothing and
@@ -609,8 +610,9 @@ void particleGenerator::generate()
             if (type != bodyType::fluid)
             {
                 std::vector<vec3>& o = obstacles[spec.dp];
+                obstacleBodies.push_back({spec.name, spec.dp, o.size(),
+                                          nodes.size()});
                 o.insert(o.end(), nodes.begin(), nodes.end());
-                obstacleBodies.push_back({spec.name, spec.dp, nodes});
             }
             sameTypeBodies& group = sameType[spec.dp];
             group.nodes.insert(group.nodes.end(), nodes.begin(), nodes.end());
@@ -671,7 +673,8 @@ scalar particleGenerator::interfaceGapExcess
 (
     const std::vector<vec3>& nodes,
     const bodySpec& spec,
-    const std::vector<obstacleBody>& obstacles
+    const std::vector<obstacleBody>& bodies,
+    const std::map<scalar, std::vector<vec3>>& obstacles
 ) const
 {
     // The contact push holds fluid at (dp + dp_o)/2 from walls and solids
@@ -683,11 +686,13 @@ scalar particleGenerator::interfaceGapExcess
     // not hide another).
     scalar worst = 0;
     std::string worstName;
-    for (const obstacleBody& o : obstacles)
+    for (const obstacleBody& o : bodies)
     {
         const scalar gap = 0.5*(spec.dp + o.dp);
         const scalar window = gap + 0.9*spec.dp;
-        const pointLocator locator(o.points, window);
+        const std::vector<vec3>& all = obstacles.at(o.dp);
+        const pointLocator locator(std::vector<vec3>(all.begin() + o.first,
+            all.begin() + o.first + o.count), window);
         double sum = 0;
         label n = 0;
         for (const vec3& p : nodes)

@@ -296,6 +296,18 @@ std::vector<particleBody> solidBodySet::output(const int nDimensions,
             component("stressYZ", &stressTensor::yz);
             component("stressZZ", &stressTensor::zz);
         }
+        else if (s.material().plane == planeModel::planeStrain)
+        {
+            // Plane strain holds the thickness: sigma_zz = nu (sigma_xx +
+            // sigma_yy), as vonMises counts it (the in-plane tensor alone
+            // would give ParaView another von Mises).
+            std::vector<scalar>& zz = o.addScalarField("stressZZ");
+            const scalar nu = s.material().nu;
+            for (label i = 0; i < n; ++i)
+            {
+                zz[i] = nu*(sigma[i].xx + sigma[i].yy);
+            }
+        }
         o.addScalarField("vonMises") = s.vonMisesOf(sigma);
         for (label id : b.id) maxId = std::max(maxId, id);
     }

@@ -58,7 +58,7 @@ expectIn "log gives the stable step" "$log" "stable deltaT = 8.17"
 expectIn "writes 0.3" "$log" "Writing time 0.3"
 expectIn "End" "$log" "^End"
 check "no FATAL" bash -c "! grep -q FATAL '$log'"
-for f in position U displacement stressXX stressXY stressYY vonMises clamped; do
+for f in position U displacement stressXX stressXY stressYY stressZZ vonMises clamped; do
     check "0.3/beam/$f written" [ -f "$c/0.3/beam/$f" ]
 done
 
@@ -88,7 +88,8 @@ PY
 
 # particlesToVTK also writes the solid's stress as one symmetric tensor
 # (XX YY ZZ XY YZ XZ, for ParaView's tensor filters), equal to the
-# component fields; 2D has no ZZ, YZ, XZ: 0. -fields '(stress)' takes it.
+# component fields; in plane strain ZZ = nu (XX + YY), so that its von Mises
+# is the field's; YZ, XZ: 0. -fields '(stress)' takes it.
 for fields in "" "(stress)"; do
     rm -rf "$c/VTK"
     particlesToVTK -case "$c" -latestTime ${fields:+-fields "$fields"} > "$scratch/log.vtk" 2>&1
@@ -107,12 +108,22 @@ for m in re.finditer(rb'<DataArray type="(\w+)" Name="(\w+)" NumberOfComponents=
     fmt = {'Float64': 'd', 'Float32': 'f', 'Int32': 'i', 'Int64': 'q'}[kind]
     arrays[name] = (nc, struct.unpack_from('<%d%s' % (size//struct.calcsize(fmt), fmt), raw, off + 8))
 nc, t = arrays['stress']
-xx, xy, yy = (arrays[k][1] for k in ('stressXX', 'stressXY', 'stressYY'))
+xx, xy, yy, zz = (arrays[k][1] for k in ('stressXX', 'stressXY', 'stressYY', 'stressZZ'))
+vm = arrays['vonMises'][1] if 'vonMises' in arrays else None   # not with -fields
 n = len(xx)
 ok = nc == 6 and len(t) == 6*n and n > 0 and max(abs(v) for v in xx) > 0
+worst = 0
 for i in range(n):
-    ok = ok and t[6*i:6*i + 6] == (xx[i], yy[i], 0, xy[i], 0, 0)
-print("stress: %d components, %d particles, %s" % (nc, n, "equal" if ok else "DIFFERENT"))
+    ok = ok and t[6*i:6*i + 6] == (xx[i], yy[i], zz[i], xy[i], 0, 0)
+    # Plane strain, nu = 0.3: stressZZ = nu (xx + yy), and the tensor's von
+    # Mises is the field's.
+    ok = ok and abs(zz[i] - 0.3*(xx[i] + yy[i])) <= 1e-6*(abs(xx[i]) + abs(yy[i])) + 1e-12
+    if vm:
+        s = (0.5*((xx[i] - yy[i])**2 + (yy[i] - zz[i])**2 + (zz[i] - xx[i])**2) + 3*xy[i]**2)**0.5
+        worst = max(worst, abs(s - vm[i])/max(vm[i], 1e-30))
+ok = ok and worst < 1e-5
+print("stress: %d components, %d particles, %s; von Mises of the tensor against the field: %.2g"
+      % (nc, n, "equal" if ok else "DIFFERENT", worst))
 sys.exit(0 if ok else 1)
 PY
 done

@@ -88,6 +88,15 @@ fresh; sed -i 's/^viscosity .*/viscosity { type artificial; }/' "$scratch/c/syst
 expectIn "viscosity { type artificial; }: alpha 0.01 by default" "$scratch/c/log.solver" \
     "viscosity artificial \(alpha 0.01\)"
 
+# A restart with a c0 changed since the run's start is weighed against the
+# scene again (a still fluid as read would pass any c0).
+fresh; sed -i 's/^stopAt .*/stopAt writeNow;/' "$scratch/c/system/controlDict"
+(cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+sed -i 's/^coefSound .*/c0 1;/' "$scratch/c/constant/fluidProperties"
+sed -i 's/^stopAt .*/stopAt endTime;/' "$scratch/c/system/controlDict"
+expectFatal "a restart with c0 lowered to 1 m/s" "Reading time [0-9.e-]+" \
+    "the speed of sound c0 = 1 m/s is far too low for this scene"
+
 # A fixed step beyond the acoustic limit: a warning before the run, and a
 # blow-up diagnosis that points to deltaT, not to maxCo.
 fresh; sed -i 's/^deltaT .*/deltaT 2e-3;/; s/^adjustTimeStep .*/adjustTimeStep no;/' "$scratch/c/system/controlDict"

@@ -1,0 +1,69 @@
+/*---------------------------------------------------------------------------*\
+  sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
+\*---------------------------------------------------------------------------*/
+// The signals of stopControl (libsrc/core/stopControl.H), delivered
+// synchronously with raise(): a stop signal asks for writeNow, the same
+// request delivered twice at once (timeout signals the child, then its
+// group) is one request, and a signal a second later ends the process.
+
+#include "stopControl.H"
+#include "timeControl.H"
+#include "../testTools.H"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <sstream>
+#include <thread>
+
+using namespace sphvcpm;
+using test::scratchDir;
+
+namespace
+{
+
+timeControl readControl(const scratchDir& dir)
+{
+    dir.write("system/controlDict",
+        "FoamFile { format ascii; class dictionary; object controlDict; }\n"
+        "endTime 1;\ndeltaT 0.001;\nwriteInterval 0.1;\n");
+    return timeControl::read(dir.path());
+}
+
+} // End anonymous namespace
+
+
+TEST(stopControl, aStopSignalTwiceAtOnceIsOneRequest)
+{
+    scratchDir dir;
+    timeControl control = readControl(dir);
+    writeSchedule schedule(control, 0);
+    std::ostringstream log;
+    stopControl stop(control, schedule, dir.path(), log);
+    EXPECT_EQ(stop.afterStep(0.001), stopAction::none);
+    std::raise(SIGTERM);
+    std::raise(SIGTERM);    // handled, not the default action: no exit
+    std::raise(SIGINT);     // within the second: the same request
+    EXPECT_EQ(stopControl::caughtSignal(), SIGTERM);
+    EXPECT_EQ(stop.afterStep(0.002), stopAction::writeNow);
+}
+
+
+TEST(stopControlDeathTest, aStopSignalASecondLaterEndsTheProcess)
+{
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_EXIT(
+    {
+        scratchDir dir;
+        timeControl control = readControl(dir);
+        writeSchedule schedule(control, 0);
+        std::ostringstream log;
+        stopControl stop(control, schedule, dir.path(), log);
+        std::raise(SIGTERM);
+        std::this_thread::sleep_for(std::chrono::milliseconds(1200));
+        std::raise(SIGTERM);
+        std::exit(0);       // not reached: the second ends it
+    }, testing::KilledBySignal(SIGTERM), "");
+}
