@@ -260,13 +260,45 @@ void timeFunction::readTable
         dict.fatalAt("file", "Keyword 'file': cannot read " + fileName);
     }
 
-    // Columns by name (a CSV with a header) or the first two of each row.
-    const bool named = dict.found("timeColumn") || dict.found("valueColumn")
-                    || dict.found("select");
+    // Columns by name (a CSV with a header), by number from 0 (a table
+    // without one, as OpenFOAM's csvFile: timeColumn 0; valueColumn 2; for
+    // a "t x y z" motion file), or the first two of each row.
+    const auto isIndex = [&](const std::string& key)
+    {
+        const entry* e = dict.findEntry(key);
+        return e && !e->isDict() && e->tokens().size() == 1
+            && e->tokens()[0].type == token::kind::integer;
+    };
+    const bool byIndex = isIndex("timeColumn") || isIndex("valueColumn");
+    const bool named = !byIndex && (dict.found("timeColumn")
+        || dict.found("valueColumn") || dict.found("select"));
     std::size_t timeCol = 0;
     std::size_t valueCol = 1;
     std::string timeName = "time";
     std::string valueName = "value";
+    if (byIndex)
+    {
+        if (dict.found("select"))
+        {
+            dict.fatalAt("select", "Keyword 'select' in dictionary \""
+                + dict.name() + "\": it picks rows by the header's column"
+                  " names; give timeColumn and valueColumn as names too");
+        }
+        for (const char* key : {"timeColumn", "valueColumn"})
+        {
+            const label c = dict.get<label>(key);   // both, as numbers
+            if (c < 0)
+            {
+                dict.fatalAt(key, "Keyword '" + std::string(key) + "' in"
+                    " dictionary \"" + dict.name() + "\": a column number"
+                    " counts from 0, found " + std::to_string(c));
+            }
+            (std::string(key) == "timeColumn" ? timeCol : valueCol) =
+                std::size_t(c);
+        }
+        timeName = "column " + std::to_string(timeCol);
+        valueName = "column " + std::to_string(valueCol);
+    }
     std::vector<std::string> header;
     // (column, wanted text) pairs of select
     std::vector<std::pair<std::size_t, std::string>> filter;
@@ -345,6 +377,17 @@ void timeFunction::readTable
             const bool keep = std::all_of(filter.begin(), filter.end(),
                 [&](const auto& f) { return cells[f.first] == f.second; });
             if (!keep) continue;
+        }
+        else if (byIndex)
+        {
+            if (cells.size() <= std::max(timeCol, valueCol))
+            {
+                fatalIOError(fileName, lineNo, "Table " + fileName + ": row"
+                    " of " + std::to_string(cells.size()) + " cells "
+                    + listCells(cells) + " has no column "
+                    + std::to_string(std::max(timeCol, valueCol))
+                    + " (columns count from 0)", "file");
+            }
         }
         else if (cells.size() != 2)
         {

@@ -353,6 +353,45 @@ TEST(timeFunction, sinusoidWithRamp)
 
 // * * * * * * * * * * * * * * * * * Errors  * * * * * * * * * * * * * * * * //
 
+TEST(timeFunction, tableColumnsByNumber)
+{
+    // A "t x y z" motion file without a header: the columns by number from
+    // 0, as OpenFOAM's csvFile; z here, with a degree value scaled.
+    test::scratchDir dir("tfColumns");
+    dir.write("constant/xyz.dat", "# t x y z\n0 9 9 0\n1 9 9 2\n2 9 9 6\n");
+    const timeFunction z = readFunction(dir, "type table;\nfile"
+        " \"constant/xyz.dat\";\ntimeColumn 0;\nvalueColumn 3;\n", false);
+    ASSERT_EQ(z.times().size(), 3u);
+    EXPECT_DOUBLE_EQ(z.value(0.5), 1);
+    EXPECT_DOUBLE_EQ(z.value(1.5), 4);
+    const timeFunction a = readFunction(dir, "type table;\nfile"
+        " \"constant/xyz.dat\";\ntimeColumn 0;\nvalueColumn 3;\n"
+        "units degrees;\n", true);
+    EXPECT_NEAR(a.value(2), 6*degree, 1e-15);
+
+    const std::string motion = motionFile(dir);
+    const auto fails = [&](const std::string& body, const std::string& file,
+                           const int line,
+                           const std::vector<std::string>& parts)
+    {
+        SCOPED_TRACE(body);
+        const FatalError err = test::catchFatal
+        (
+            [&] { readFunction(dir, body, false); }
+        );
+        test::expectError(err, file, line, parts);
+    };
+    fails("type table;\nfile \"constant/xyz.dat\";\ntimeColumn 0;\n"
+          "valueColumn 4;\n", (dir.path()/"constant/xyz.dat").string(), 2,
+          {"has no column 4", "columns count from 0"});
+    fails("type table;\nfile \"constant/xyz.dat\";\ntimeColumn 0;\n"
+          "valueColumn -1;\n", motion, 6, {"counts from 0, found -1"});
+    fails("type table;\nfile \"constant/xyz.dat\";\ntimeColumn 0;\n"
+          "valueColumn 1;\nselect { x 9; }\n", motion, 7,
+          {"'select'", "give timeColumn and valueColumn as names"});
+}
+
+
 TEST(timeFunction, errors)
 {
     test::scratchDir dir("tfErrors");
