@@ -444,17 +444,44 @@ void fsiSolver::placeMovingWalls()
             }
             particles_.velocity[i] = T.velocityAtPosition(x);
         }
-        if (moved > 0) checkStartOverlap(b, moved);
+        if (moved > 0)
+        {
+            std::vector<point> wall;
+            for (label i = 0; i < particles_.size(); ++i)
+            {
+                if (particles_.body[i] == b) wall.push_back(particles_.position[i]);
+            }
+            checkStartOverlap("Wall " + bodies_[b].name, bodies_[b].dp, wall,
+                              moved);
+        }
+    }
+    if (!freshStart_ || !solids_) return;
+    // Solids that their clamp's motion placed (prescribedMotions::
+    // placeSolids), rigidly, as a whole.
+    for (const solidBody& s : solids_->bodies())
+    {
+        scalar moved = 0;
+        for (label i = 0; i < s.solid->size(); ++i)
+        {
+            moved = std::max(moved, mag(toVec3(s.solid->position[i]
+                                             - s.solid->reference()[i])));
+        }
+        if (moved > 0)
+        {
+            checkStartOverlap("Solid " + s.name, s.dp, s.solid->position,
+                              moved);
+        }
     }
 }
 
 
-void fsiSolver::checkStartOverlap(const std::size_t wall, const scalar moved)
+void fsiSolver::checkStartOverlap(const std::string& what, const scalar dpWall,
+                                  const std::vector<point>& moved,
+                                  const scalar distance)
 {
-    // The fluid was generated around the wall's reference position: a
-    // motion already under way at the start time puts the wall into it,
+    // The fluid was generated around the body's reference position: a
+    // motion already under way at the start time puts the body into it,
     // which then bursts out (Mach above 1 in a piston flume).
-    const scalar dpWall = bodies_[wall].dp;
     scalar cell = dpWall;
     for (const bodyInfo& b : bodies_) cell = std::max(cell, b.dp);
     const auto key = [cell](const point& x)
@@ -473,12 +500,9 @@ void fsiSolver::checkStartOverlap(const std::size_t wall, const scalar moved)
     };
     std::unordered_map<std::array<long long, 3>, std::vector<label>, keyHash>
         bins;
-    for (label i = 0; i < particles_.size(); ++i)
+    for (std::size_t i = 0; i < moved.size(); ++i)
     {
-        if (particles_.body[i] == wall)
-        {
-            bins[key(particles_.position[i])].push_back(i);
-        }
+        bins[key(moved[i])].push_back(label(i));
     }
     label nClose = 0;
     scalar nearest = vGreat;
@@ -498,7 +522,7 @@ void fsiSolver::checkStartOverlap(const std::size_t wall, const scalar moved)
             if (it == bins.end()) continue;
             for (const label j : it->second)
             {
-                d2 = std::min(d2, magSqr(toVec3(x - particles_.position[j])));
+                d2 = std::min(d2, magSqr(toVec3(x - moved[j])));
             }
         }
         // generateParticles keeps the fluid at the gap or beyond.
@@ -511,7 +535,7 @@ void fsiSolver::checkStartOverlap(const std::size_t wall, const scalar moved)
     }
     if (nClose > 0)
     {
-        warning("Wall " + bodies_[wall].name + " is moved " + str(moved)
+        warning(what + " is moved " + str(distance)
             + " m by its motion at the start time " + str(time_) + " (from"
             " where generateParticles put it), into the fluid: "
             + std::to_string(nClose) + " particles of " + fluidName

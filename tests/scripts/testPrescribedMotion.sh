@@ -260,6 +260,25 @@ mistake()   # mistake <what> <sed expression on constant/motion> <pattern> [stat
 mistake "a tank tilted 10 degrees at the start" \
     's/angle   { .* }/angle   { type constant; value 10; units degrees; }/' \
     "Wall tank is moved 0.0[0-9]+ m by its motion at the start time 0 .*, into the fluid: [0-9]+ particles of water lie closer to it than the contact gap"
+# The rolling tank turned 8 degrees at the start: its tank and its plate
+# (a solid placed by its clamp's motion) both crowd the oil.
+m="$scratch/rolledAtStart"
+cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/rollingTank2D" "$m"
+(cd "$m" && ./Allclean > /dev/null 2>&1)
+python3 - "$m/constant/motion" <<'PY'
+import sys
+s = open(sys.argv[1]).read()
+i = s.index("    angle\n"); j = s.index("    }\n", i) + 6
+open(sys.argv[1], 'w').write(s[:i] + "    angle { type constant; value 8; units degrees; }\n" + s[j:])
+PY
+sed -i 's/^stopAt .*/stopAt writeNow;/' "$m/system/controlDict"
+generateParticles -case "$m" > /dev/null 2>&1
+sphVcpmFsi -case "$m" > "$scratch/log.rolled" 2>&1
+check "rolling tank turned at the start: one step runs" grep -q '^End' "$scratch/log.rolled"
+expectIn "rolling tank turned at the start: the tank crowds the oil" "$scratch/log.rolled" \
+    "Wall tank is moved .* into the fluid: [0-9]+ particles of oil"
+expectIn "rolling tank turned at the start: so does the plate its clamp placed" "$scratch/log.rolled" \
+    "Solid plate is moved .* into the fluid: [0-9]+ particles of oil"
 mistake "a body the case has not" 's/bodies  (tank);/bodies  (tnk);/' \
     "the case has no body tnk \\(did you mean tank\\?\\)" 1
 mistake "a period in metres" 's/period 16;/period [m] 16;/' \
