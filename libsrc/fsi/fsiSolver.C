@@ -6,13 +6,13 @@
 #include "error.H"
 #include "fluidInteractions.H"
 #include "pairRates.H"
+#include "pointLocator.H"
 #include "startState.H"
 #include "stopControl.H"
 #include "parallel.H"
 #include "withKernel.H"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <future>
 #include <cmath>
@@ -21,7 +21,6 @@
 #include <map>
 #include <ostream>
 #include <sstream>
-#include <unordered_map>
 
 namespace sphvcpm
 {
@@ -432,6 +431,7 @@ void fsiSolver::placeMovingWalls()
         // restart's walls are already where their motion puts them.
         const rigidTransform T = motions_.of(b)->transform(time_);
         scalar moved = 0;
+        std::vector<vec3> placed;
         for (label i = 0; i < particles_.size(); ++i)
         {
             if (particles_.body[i] != b) continue;
@@ -441,18 +441,14 @@ void fsiSolver::placeMovingWalls()
                 const point to = T.apply(x);
                 moved = std::max(moved, mag(toVec3(to - x)));
                 x = to;
+                placed.push_back(toVec3(x));
             }
             particles_.velocity[i] = T.velocityAtPosition(x);
         }
         if (moved > 0)
         {
-            std::vector<point> wall;
-            for (label i = 0; i < particles_.size(); ++i)
-            {
-                if (particles_.body[i] == b) wall.push_back(particles_.position[i]);
-            }
-            checkStartOverlap("Wall " + bodies_[b].name, bodies_[b].dp, wall,
-                              moved);
+            checkStartOverlap("Wall " + bodies_[b].name, bodies_[b].dp,
+                              std::move(placed), moved);
         }
     }
     if (!freshStart_ || !solids_) return;
@@ -461,14 +457,16 @@ void fsiSolver::placeMovingWalls()
     for (const solidBody& s : solids_->bodies())
     {
         scalar moved = 0;
+        std::vector<vec3> placed;
         for (label i = 0; i < s.solid->size(); ++i)
         {
             moved = std::max(moved, mag(toVec3(s.solid->position[i]
                                              - s.solid->reference()[i])));
+            placed.push_back(toVec3(s.solid->position[i]));
         }
         if (moved > 0)
         {
-            checkStartOverlap("Solid " + s.name, s.dp, s.solid->position,
+            checkStartOverlap("Solid " + s.name, s.dp, std::move(placed),
                               moved);
         }
     }
@@ -476,60 +474,29 @@ void fsiSolver::placeMovingWalls()
 
 
 void fsiSolver::checkStartOverlap(const std::string& what, const scalar dpWall,
-                                  const std::vector<point>& moved,
+                                  std::vector<vec3> placed,
                                   const scalar distance)
 {
     // The fluid was generated around the body's reference position: a
     // motion already under way at the start time puts the body into it,
-    // which then bursts out (Mach above 1 in a piston flume).
-    scalar cell = dpWall;
-    for (const bodyInfo& b : bodies_) cell = std::max(cell, b.dp);
-    const auto key = [cell](const point& x)
-    {
-        return std::array<long long, 3>{
-            (long long)std::floor(x.x/cell), (long long)std::floor(x.y/cell),
-            (long long)std::floor(x.z/cell)};
-    };
-    struct keyHash
-    {
-        std::size_t operator()(const std::array<long long, 3>& k) const
-        {
-            return std::hash<long long>()(k[0]*73856093LL ^ k[1]*19349663LL
-                                          ^ k[2]*83492791LL);
-        }
-    };
-    std::unordered_map<std::array<long long, 3>, std::vector<label>, keyHash>
-        bins;
-    for (std::size_t i = 0; i < moved.size(); ++i)
-    {
-        bins[key(moved[i])].push_back(label(i));
-    }
+    // which then bursts out (Mach above 1 in a piston flume). The gap is
+    // at most the largest spacing, the locator's reach.
+    scalar reach = dpWall;
+    for (const bodyInfo& b : bodies_) reach = std::max(reach, b.dp);
+    const pointLocator body(std::move(placed), reach);
     label nClose = 0;
     scalar nearest = vGreat;
     std::string fluidName;
     for (label i = 0; i < particles_.size(); ++i)
     {
         if (particles_.kind[i] != fluidKind) continue;
-        const point& x = particles_.position[i];
         const scalar gap = 0.5*(bodies_[particles_.body[i]].dp + dpWall);
-        const auto k = key(x);
-        scalar d2 = vGreat;
-        for (long long dx = -1; dx <= 1; ++dx)
-        for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz)
-        {
-            const auto it = bins.find({k[0] + dx, k[1] + dy, k[2] + dz});
-            if (it == bins.end()) continue;
-            for (const label j : it->second)
-            {
-                d2 = std::min(d2, magSqr(toVec3(x - moved[j])));
-            }
-        }
+        const scalar d = body.nearestWithinCell(toVec3(particles_.position[i]));
         // generateParticles keeps the fluid at the gap or beyond.
-        if (d2 < 0.81*gap*gap)
+        if (d < 0.9*gap)
         {
             ++nClose;
-            nearest = std::min(nearest, std::sqrt(d2));
+            nearest = std::min(nearest, d);
             fluidName = bodies_[particles_.body[i]].name;
         }
     }
@@ -714,12 +681,7 @@ void fsiSolver::checkMotionsInDomain()
     // endTime raised while the run goes on: the domain was sized for the
     // motions up to the old one, and cannot grow now.
     motionsCheckedUntil_ = control_.endTime;
-    bool anyMotion = false;
-    for (std::size_t b = 0; b < bodies_.size(); ++b)
-    {
-        anyMotion = anyMotion || motions_.of(b);
-    }
-    if (!anyMotion || model_.userDomain) return;
+    if (motions_.empty() || model_.userDomain) return;
     if (gpu_) gpuToHost();
     point lo{vGreat, vGreat, vGreat}, hi = -lo;
     growByMotions(lo, hi);
