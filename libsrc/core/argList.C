@@ -210,4 +210,61 @@ std::string executionTimeLine()
     return os.str();
 }
 
+std::vector<std::string> argList::parseWordList(
+    const std::string& text, const std::string& option)
+{
+    std::string s = text;
+    const auto first = s.find_first_not_of(" \t\n");
+    const auto last = s.find_last_not_of(" \t\n");
+    s = first == std::string::npos ? "" : s.substr(first, last - first + 1);
+    if (!s.empty() && s.front() == '(')
+    {
+        if (s.back() != ')')
+        {
+            fatalError("Invalid " + option + " '" + text
+                + "': missing ')'. Expected a list of names, e.g. "
+                + option + " '(name1 name2)'");
+        }
+        s = s.substr(1, s.size() - 2);
+    }
+
+    std::vector<std::string> words;
+    std::string word;
+    auto flush = [&]()
+    {
+        if (!word.empty())
+        {
+            words.push_back(word);
+            word.clear();
+        }
+    };
+    for (char c : s)
+    {
+        if (c == ' ' || c == '\t' || c == '\n' || c == ',')
+        {
+            flush();
+        }
+        else if (c == '(' || c == ')' || c == '"' || c == '\''
+              || c == ';' || c == '{' || c == '}')
+        {
+            fatalError("Invalid " + option + " '" + text + "': unexpected '"
+                + std::string(1, c) + "'. Expected a list of names, e.g. "
+                + option + " '(name1 name2)'");
+        }
+        else
+        {
+            word += c;
+        }
+    }
+    flush();
+    return words;
+}
+
+
+std::vector<std::string> argList::wordListOption(const std::string& name)
+    const
+{
+    return parseWordList(option(name), "-" + name);
+}
+
 } // End namespace sphvcpm

@@ -2,7 +2,9 @@
 
 #include <csignal>
 #include <iostream>
+#include <mutex>
 #include <new>
+#include <set>
 #include <sstream>
 
 namespace sphvcpm
@@ -63,8 +65,29 @@ void fatalIOError(const std::string& file, int line,
                      keyword);
 }
 
+namespace
+{
+bool warnOnce = false;
+std::mutex warnedMutex;
+std::set<std::string> warned;
+}
+
+void warnOnlyOnce(const bool once)
+{
+    warnOnce = once;
+}
+
 void warning(const std::string& message, const std::string& file, int line)
 {
+    if (warnOnce)
+    {
+        const std::lock_guard<std::mutex> lock(warnedMutex);
+        if (!warned.insert(file + ":" + std::to_string(line) + ":"
+                           + message).second)
+        {
+            return;
+        }
+    }
     std::cerr << "\n--> SPHVCPM Warning :\n" << message << "\n";
     if (!file.empty())
     {

@@ -48,11 +48,13 @@ const std::string verletTestedLimits = "verletSteps <= "
 // * * * * * * * * * * * * * * * * Construction * * * * * * * * * * * * * * //
 
 fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
-                     const std::string& device)
+                     const std::string& device,
+                     const std::string& postProcessTime)
 :
     caseDir_(caseDir),
     log_(log),
-    control_(timeControl::read(caseDir))
+    control_(timeControl::read(caseDir)),
+    postProcessTime_(postProcessTime)
 {
     std::string chosen = device.empty() ? control_.device : device;
     if (chosen == "auto")
@@ -126,7 +128,7 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
               + std::to_string(model_.verletSteps) + " steps and after"
               " each write)"
             : std::string(" (two force passes a step)")) << "\n";
-    if (!control_.adjustTimeStep)
+    if (!control_.adjustTimeStep && postProcessTime_.empty())
     {
         // A fixed step beyond the acoustic limit blows up within a few
         // steps, whatever the flow: say so before the run.
@@ -142,7 +144,8 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
                 " adjustTimeStep yes", deltaT.file(), deltaT.line());
         }
     }
-    if (model_.timeScheme == timeSchemeType::verlet)
+    if (model_.timeScheme == timeSchemeType::verlet
+     && postProcessTime_.empty())
     {
         // The leapfrog centres density diffusion, which then grows between
         // the Euler steps by about 2 delta maxCo a step (docs/solver.md).
@@ -183,8 +186,11 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         << 3*sizeof(label) << " per cell\n" << std::endl;
 
     control_.dict.setCaseDimensions(model_.nDimensions);
-    functions_ = functionObject::readAll(control_.dict, caseDir_,
-        startTimeName_, model_, bodies_);
+    if (postProcessTime_.empty())
+    {
+        functions_ = functionObject::readAll(control_.dict, caseDir_,
+            startTimeName_, model_, bodies_);
+    }
 
     hostParticleStore store = hostStore();
     sortOn(store);
@@ -247,7 +253,8 @@ std::string startTimeName(const fs::path& caseDir,
 
 void fsiSolver::readStartTime()
 {
-    startTimeName_ = startTimeName(caseDir_, control_);
+    startTimeName_ = postProcessTime_.empty()
+        ? startTimeName(caseDir_, control_) : postProcessTime_;
 
     const timeState state = readTimeState(caseDir_, startTimeName_);
     // Index 0: the initial state (generateParticles), not a solver write.
@@ -259,7 +266,11 @@ void fsiSolver::readStartTime()
     deltaT_ = control_.deltaT;
     deltaT0_ = state.deltaT > 0 ? state.deltaT : control_.deltaT;
 
-    clearInterruptedWrites(caseDir_, log_);
+    if (postProcessTime_.empty())
+    {
+        // (Post-processing leaves them: the solver may be writing now.)
+        clearInterruptedWrites(caseDir_, log_);
+    }
     warnUnreadConstantFiles(caseDir_);
     log_<< "Reading time " << startTimeName_ << "\n";
     std::vector<particleBody> bodies =
@@ -959,6 +970,7 @@ void cudaParticleStoreDeleter::operator()(cudaParticleStore*) const {}
 void fsiSolver::startGpu() { fatalError("no CUDA backend in this build"); }
 void fsiSolver::stepGpu() {}
 void fsiSolver::gpuToHost() {}
+void fsiSolver::updateWallsGpu() {}
 double fsiSolver::countInteractionsGpu() { return 0; }
 #endif
 
@@ -1058,15 +1070,34 @@ void fsiSolver::finishWrite()
 
 void fsiSolver::executeFunctions()
 {
+    bool due = false, wallsDue = false;
+    for (const auto& f : functions_)
+    {
+        const bool now = f->due(time_, timeIndex_);
+        due = due || now;
+        wallsDue = wallsDue || (now && f->usesWallPressure());
+    }
+    if (!due) return;
+    if (wallsDue)
+    {
+        // The walls' pressures of the step's last force pass were
+        // extrapolated from the fluid at its start (or middle): extrapolate
+        // them from this state, as -postProcess does from a written time.
+        if (gpu_)
+        {
+            updateWallsGpu();
+        }
+        else
+        {
+            hostParticleStore store = hostStore();
+            updateWallsOn(store);
+        }
+    }
     if (gpu_)
     {
-        bool due = false;
-        for (const auto& f : functions_) due = due || f->due(time_, timeIndex_);
-        if (!due) return;
         gpuToHost();
     }
-    const solverSnapshot s{particles_, cells_, model_, bodies_, time_,
-                           timeIndex_, deltaT_, &solidViews_};
+    const solverSnapshot s = snapshot();
     for (auto& f : functions_)
     {
         f->execute(s);

@@ -330,6 +330,12 @@ void fsiSolver::gpuToHost()
 }
 
 
+void fsiSolver::updateWallsGpu()
+{
+    updateWallsOn(*gpu_);
+}
+
+
 double fsiSolver::countInteractionsGpu()
 {
     return countInteractionsOn(*gpu_);

@@ -47,7 +47,8 @@ solidOnlySolver::solidOnlySolver
 (
     const fs::path& caseDir,
     const std::string& startTimeName,
-    std::ostream& log
+    std::ostream& log,
+    const bool postProcessing
 )
 :
     caseDir_(caseDir),
@@ -61,7 +62,10 @@ solidOnlySolver::solidOnlySolver
     beginTime_ = time_;
     const bool freshStart = state.index == 0;
 
-    clearInterruptedWrites(caseDir_, log_);
+    if (!postProcessing)
+    {
+        clearInterruptedWrites(caseDir_, log_);
+    }
     warnUnreadConstantFiles(caseDir_);
     log_<< "Reading time " << startTimeName_ << " (solids alone: no fluid"
         << " body)\n";
@@ -103,15 +107,17 @@ solidOnlySolver::solidOnlySolver
                                &b.solid->position});
     }
     control_.dict.setCaseDimensions(nDim_);
-    functions_ = functionObject::readAll(control_.dict, caseDir_,
-        startTimeName_, model_, bodies_, false);
+    if (!postProcessing)
+    {
+        functions_ = functionObject::readAll(control_.dict, caseDir_,
+            startTimeName_, model_, bodies_, false);
+    }
 }
 
 
 void solidOnlySolver::executeFunctions()
 {
-    const solverSnapshot s{noFluid_, noCells_, model_, bodies_, time_,
-                           timeIndex_, deltaT_, &solidViews_};
+    const solverSnapshot s = snapshot();
     for (auto& f : functions_)
     {
         f->execute(s);

@@ -158,10 +158,16 @@ std::ofstream& functionObject::output(const std::string& file)
 std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
     const dictionary& controlDict, const std::filesystem::path& caseDir,
     const std::string& startTimeName, const sphModel& model,
-    const std::vector<bodyInfo>& bodies, const bool hasFluid)
+    const std::vector<bodyInfo>& bodies, const bool hasFluid,
+    const std::vector<std::string>& only)
 {
     std::vector<std::unique_ptr<functionObject>> all;
     const entry* functions = controlDict.findEntry("functions");
+    if (!functions && !only.empty())
+    {
+        fatalError("No functions {} in " + controlDict.name() + ": function"
+            " object '" + only.front() + "' is not there");
+    }
     if (!functions)
     {
         return all;
@@ -174,8 +180,23 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
     }
 
     const dictionary& fns = functions->dict();
+    for (const std::string& name : only)
+    {
+        if (!fns.findEntry(name))
+        {
+            fatalIOError(functions->file(), functions->line(),
+                "Function object '" + name + "' is not in functions {};"
+                " its entries are " + listOf(fns.keys()), name);
+        }
+    }
     for (const std::string& name : fns.keys())
     {
+        const bool named =
+            std::find(only.begin(), only.end(), name) != only.end();
+        if (!only.empty() && !named)
+        {
+            continue;
+        }
         const entry& e = *fns.findEntry(name);
         if (!e.isDict())
         {
@@ -195,7 +216,7 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
         }
 
         const dictionary& dict = e.dict();
-        if (!dict.getOrDefault<bool>("enabled", true))
+        if (!dict.getOrDefault<bool>("enabled", true) && !named)
         {
             continue;
         }

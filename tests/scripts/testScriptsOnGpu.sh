@@ -1,7 +1,7 @@
 #!/bin/bash
 # The solver's script tests again with SPHVCPM_DEVICE=cuda: bad input and
 # blow-up diagnoses, particles leaving the domain, restart, stopping a run
-# (stopAt, controlDict changed, signals), the stability
+# (stopAt, controlDict changed, signals), -postProcess, the stability
 # suites, the coupling, prescribed motions and the solid-wall contact,
 # each on the GPU with its own checks and tolerances. Skipped (77) where
 # no GPU can be used.
@@ -9,7 +9,7 @@
 
 skipWithoutGpu "running the script tests on the GPU"
 
-for test in testSolverInput testRestart testRunControl testStability testFsiStability testFsiCoupling \
+for test in testSolverInput testRestart testRunControl testPostProcess testStability testFsiStability testFsiCoupling \
     testPrescribedMotion testSolidWallContact; do
     SPHVCPM_DEVICE=cuda bash "$(dirname "$0")/$test.sh" > "$scratch/$test.log" 2>&1
     status=$?

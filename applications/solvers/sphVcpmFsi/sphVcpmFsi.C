@@ -4,7 +4,8 @@
 // sphVcpmFsi: weakly compressible SPH for free-surface flow between rigid
 // walls, coupled to elastic VCPM solids, or the solids alone when the case
 // has no fluid. Reads the case, advances it to endTime on the CPU or the
-// GPU and writes time directories and postProcessing/.
+// GPU and writes time directories and postProcessing/; with -postProcess
+// it only evaluates the function objects on the times already written.
 
 #include "argList.H"
 #include "cudaDevice.H"
@@ -12,11 +13,51 @@
 #include "solidOnlySolver.H"
 #include "stopControl.H"
 #include "fsiSolver.H"
+#include "postProcessTimes.H"
+#include "timeSelection.H"
 
 #include <cstdlib>
 #include <iostream>
 
 using namespace sphvcpm;
+
+namespace
+{
+
+// sphVcpmFsi -postProcess: the function objects on the written times.
+int postProcess(const argList& args)
+{
+    if (args.found("device") || args.found("timers"))
+    {
+        fatalError("-postProcess runs on the CPU and times nothing: leave"
+            " out -device and -timers");
+    }
+    postProcessSettings settings;
+    settings.dictFile = args.option("dict");
+    settings.functions = args.wordListOption("funcs");
+    if (args.found("func"))
+    {
+        settings.functions.push_back(args.option("func"));
+    }
+    settings.overwrite = args.found("overwrite");
+    args.printBanner();
+
+    const timeSelection selection(args);
+    const std::vector<timeInstant> all = findTimes(args.casePath());
+    const std::vector<timeInstant> times =
+        selection.selectOrFail(args.casePath(), all);
+    for (const auto& note : selection.nearestNotes(all))
+    {
+        std::cout << note << "\n";
+    }
+    postProcessTimes(args.casePath(), times, settings, std::cout);
+
+    std::cout << executionTimeLine() << "\n\nEnd\n" << std::endl;
+    return 0;
+}
+
+} // End anonymous namespace
+
 
 int main(int argc, char* argv[])
 {
@@ -38,9 +79,37 @@ int main(int argc, char* argv[])
         args.addBoolOption("timers", "time the phases of the step and"
             " print them in the run summary (on the GPU each phase then"
             " waits for the last)");
+        args.addBoolOption("postProcess", "do not solve: evaluate the"
+            " function objects on the written times (-time, -latestTime,"
+            " -noZero choose them)");
+        args.addOption("func", "name", "with -postProcess: only this entry"
+            " of functions {} (also with enabled false)");
+        args.addOption("funcs", "list", "with -postProcess: only these"
+            " entries, e.g. '(probe1 gauges)'");
+        args.addOption("dict", "file", "with -postProcess: read functions {}"
+            " from this file (relative to the case) instead of"
+            " system/controlDict");
+        args.addBoolOption("overwrite", "with -postProcess: write over the"
+            " tables of postProcessing/<name>/<first time>/");
+        timeSelection::addOptions(args);
+        args.addNote("-postProcess writes postProcessing/<name>/<first time"
+            " evaluated>/, each time sampled once.");
         if (!args.parse(argc, argv))
         {
             return 0;
+        }
+        if (args.found("postProcess"))
+        {
+            return postProcess(args);
+        }
+        for (const char* only : {"func", "funcs", "dict", "overwrite",
+                                 "time", "latestTime", "noZero"})
+        {
+            if (args.found(only))
+            {
+                fatalError("-" + std::string(only) + " is an option of"
+                    " -postProcess, which was not given");
+            }
         }
         const timeControl control = timeControl::read(args.casePath());
         // -device, else $SPHVCPM_DEVICE (so that a tutorial's Allrun runs

@@ -2,19 +2,25 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 // The command line: FOAM_CASE and FOAM_CASENAME set from the case, as
-// OpenFOAM's argList does, so that dictionaries can include through them.
+// OpenFOAM's argList does, so that dictionaries can include through them;
+// word-list options; warnings given once when asked.
 
 #include "argList.H"
 #include "dictionary.H"
+#include "error.H"
 #include "../testTools.H"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 using namespace sphvcpm;
+using test::catchFatal;
+using test::expectMessage;
 using test::scratchDir;
 
 namespace fs = std::filesystem;
@@ -105,4 +111,58 @@ TEST(argList, setsFoamCaseForIncludes)
     ASSERT_TRUE(parsed);
     EXPECT_EQ(env("FOAM_CASE"), here.casePath().string());
     EXPECT_EQ(env("FOAM_CASENAME"), "system");
+}
+
+
+TEST(argList, parseWordList)
+{
+    using words = std::vector<std::string>;
+    EXPECT_EQ(argList::parseWordList("(rho U)", "-fields"),
+              (words{"rho", "U"}));
+    EXPECT_EQ(argList::parseWordList(" ( rho  ) ", "-fields"),
+              (words{"rho"}));
+    EXPECT_EQ(argList::parseWordList("rho,U p", "-fields"),
+              (words{"rho", "U", "p"}));
+    EXPECT_EQ(argList::parseWordList("()", "-fields"), words{});
+    for (const std::string bad : {"(rho U", "(rho (U))", "\"rho\"", "rho;"})
+    {
+        const FatalError err = catchFatal([&]()
+        {
+            argList::parseWordList(bad, "-fields");
+        });
+        expectMessage(err,
+            {"Invalid -fields '" + bad + "'", "(name1 name2)"});
+    }
+}
+
+
+TEST(warning, onlyOnceWhenAsked)
+{
+    // What sphVcpmFsi -postProcess uses: it reads the case once per time.
+    std::ostringstream captured;
+    std::streambuf* const old = std::cerr.rdbuf(captured.rdbuf());
+    warning("the same", "a/file", 3);
+    warning("the same", "a/file", 3);
+    warnOnlyOnce(true);
+    warning("once", "a/file", 3);
+    warning("once", "a/file", 3);
+    warning("once", "a/file", 4);       // another line: another warning
+    warning("the same", "a/file", 3);   // given before, but not remembered
+    warning("the same", "a/file", 3);
+    warnOnlyOnce(false);
+    warning("once", "a/file", 3);
+    std::cerr.rdbuf(old);
+
+    const std::string text = captured.str();
+    const auto count = [&](const std::string& what)
+    {
+        std::size_t n = 0;
+        for (auto at = text.find(what); at != std::string::npos;
+             at = text.find(what, at + 1)) ++n;
+        return n;
+    };
+    EXPECT_EQ(count("SPHVCPM Warning"), 6u) << text;
+    EXPECT_EQ(count("the same\nfile: a/file at line 3"), 3u) << text;
+    EXPECT_EQ(count("once\nfile: a/file at line 3"), 2u) << text;
+    EXPECT_EQ(count("once\nfile: a/file at line 4"), 1u) << text;
 }

@@ -524,27 +524,6 @@ TEST(timeSelection, describe)
 }
 
 
-TEST(vtkCaseConverter, parseWordList)
-{
-    using words = std::vector<std::string>;
-    EXPECT_EQ(vtkCaseConverter::parseWordList("(rho U)", "-fields"),
-              (words{"rho", "U"}));
-    EXPECT_EQ(vtkCaseConverter::parseWordList(" ( rho  ) ", "-fields"),
-              (words{"rho"}));
-    EXPECT_EQ(vtkCaseConverter::parseWordList("rho,U p", "-fields"),
-              (words{"rho", "U", "p"}));
-    EXPECT_EQ(vtkCaseConverter::parseWordList("()", "-fields"), words{});
-    for (const std::string bad : {"(rho U", "(rho (U))", "\"rho\"", "rho;"})
-    {
-        const FatalError err = catchFatal([&]()
-        {
-            vtkCaseConverter::parseWordList(bad, "-fields");
-        });
-        expectMessage(err, {"Invalid -fields '" + bad + "'", "(rho U)"});
-    }
-}
-
-
 namespace
 {
 

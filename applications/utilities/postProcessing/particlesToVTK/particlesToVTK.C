@@ -46,8 +46,7 @@ int main(int argc, char* argv[])
         }
         if (args.found("fields"))
         {
-            converter.restrictFields(vtkCaseConverter::parseWordList(
-                args.option("fields"), "-fields"), times);
+            converter.restrictFields(args.wordListOption("fields"), times);
         }
 
         for (const timeInstant& t : times)
