@@ -9,6 +9,7 @@
 #include "error.H"
 #include "foamFile.H"
 #include "tokeniser.H"
+#include "formatting.H"
 
 #include <algorithm>
 #include <cerrno>
@@ -68,17 +69,6 @@ std::string dictionaryDetail::closest(const std::string& key,
         return "";
     }
     return best;
-}
-
-
-std::string dictionaryDetail::listWords(const std::vector<std::string>& words)
-{
-    std::string s = "(";
-    for (std::size_t i = 0; i < words.size(); ++i)
-    {
-        s += (i ? " " : "") + words[i];
-    }
-    return s + ")";
 }
 
 
@@ -615,7 +605,7 @@ const entry& dictionary::lookupEntry(const std::string& key) const
     fatalIOError(file_, line_, "Keyword '" + key + "' is undefined in "
         "dictionary \"" + name_ + "\"."
         + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
-        + " Keywords present: " + dictionaryDetail::listWords(present),
+        + " Keywords present: " + str(present),
         key);
 }
 
@@ -691,7 +681,7 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
         fatalIOError(e.file(), e.line(), "Unknown keyword '" + e.keyword()
             + "' in dictionary \"" + name_ + "\"."
             + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
-            + " Valid keywords are: " + dictionaryDetail::listWords(valid),
+            + " Valid keywords are: " + str(valid),
             e.keyword());
     }
 }

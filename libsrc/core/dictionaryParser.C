@@ -7,6 +7,7 @@
 
 #include "dictionaryParser.H"
 #include "error.H"
+#include "formatting.H"
 
 #include <algorithm>
 #include <cctype>
@@ -79,7 +80,7 @@ bool isKnownDirective(const std::string& name)
     }
     fatalIOError(file, line, "Directive #" + name
         + " is not supported by sphvcpm" + why + " Supported directives "
-        "are " + dictionaryDetail::listWords(supportedDirectives),
+        "are " + str(supportedDirectives),
         "#" + name);
 }
 
@@ -826,7 +827,7 @@ void dictionaryParser::readDirective(dictionary& dict, tokeniser& tk,
          || std::find(modes.begin(), modes.end(), a.text) == modes.end())
         {
             fatalIOError(file, have ? a.line : t.line, "Expected one of "
-                + dictionaryDetail::listWords(modes) + " after #inputMode, "
+                + str(modes) + " after #inputMode, "
                 "found " + foundText(have, a), "#inputMode");
         }
         if (a.text == "merge" || a.text == "default")
@@ -967,7 +968,7 @@ void dictionaryParser::include(dictionary& dict, tokeniser& tk,
             looked.push_back("\"" + c.string() + "\"");
         }
         fatalIOError(file, directive.line, "Cannot find " + what + " file \""
-            + name + "\": looked for " + dictionaryDetail::listWords(looked),
+            + name + "\": looked for " + str(looked),
             what);
     }
 
@@ -1062,7 +1063,7 @@ dictionaryParser::resolved dictionaryParser::resolve
         + ": no keyword '" + name + "' in dictionary \"" + searched->name()
         + "\" or its parents, and no environment variable of that name."
         + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
-        + " Valid keywords are: " + dictionaryDetail::listWords(keys),
+        + " Valid keywords are: " + str(keys),
         "$" + var);
 }
 

@@ -7,6 +7,7 @@
 #include "dictionary.H"
 #include "dictionaryParser.H"
 #include "error.H"
+#include "formatting.H"
 
 #include <algorithm>
 #include <charconv>
@@ -633,7 +634,7 @@ std::string dictionary::getWord(const std::string& key,
         const std::string guess = dictionaryDetail::closest(w, allowed);
         fatalAt(key, "Keyword '" + key + "': unknown value '" + w + "'."
             + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
-            + " Valid values are: " + dictionaryDetail::listWords(allowed));
+            + " Valid values are: " + str(allowed));
     }
     return w;
 }

@@ -7,6 +7,7 @@
 
 #include "dimensionSet.H"
 #include "dictionaryParser.H"
+#include "formatting.H"
 
 #include <cctype>
 #include <cmath>
@@ -314,7 +315,7 @@ private:
             {
                 "unknown unit '" + p.text + "'"
               + (guess.empty() ? "" : " (did you mean '" + guess + "'?)")
-              + "; known units are " + dictionaryDetail::listWords(known)
+              + "; known units are " + str(known)
             };
         }
         if (p.type == piece::kind::number)

@@ -6,6 +6,7 @@
 #include "dictionary.H"
 #include "dictionaryParser.H"
 #include "error.H"
+#include "formatting.H"
 
 #include <algorithm>
 
@@ -13,22 +14,6 @@ namespace sphvcpm
 {
 
 namespace fs = std::filesystem;
-
-namespace
-{
-
-std::string listNames(const std::vector<std::string>& names)
-{
-    std::string s = "(";
-    for (std::size_t i = 0; i < names.size(); ++i)
-    {
-        s += (i ? " " : "") + names[i];
-    }
-    return s + ")";
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -169,7 +154,7 @@ void motionSet::checkBodies
                 fatalIOError(m.file, m.line, "Keyword 'bodies' of motion "
                     + m.name + ": the case has no body " + body
                     + (near.empty() ? "" : " (did you mean " + near + "?)")
-                    + "; its bodies are " + listNames(all), "bodies");
+                    + "; its bodies are " + str(all), "bodies");
             }
             if (std::find(allowed.begin(), allowed.end(), body)
              == allowed.end())
@@ -177,7 +162,7 @@ void motionSet::checkBodies
                 fatalIOError(m.file, m.line, "Keyword 'bodies' of motion "
                     + m.name + ": " + body + " is not " + what
                     + "; the bodies that can move are "
-                    + listNames(allowed), "bodies");
+                    + str(allowed), "bodies");
             }
         }
     }

@@ -5,6 +5,7 @@
 
 #include "dictionary.H"
 #include "error.H"
+#include "formatting.H"
 
 #include <algorithm>
 #include <cctype>
@@ -82,16 +83,6 @@ std::string numberText(const scalar v)
     os.precision(12);
     os << v;
     return os.str();
-}
-
-std::string listCells(const std::vector<std::string>& cells)
-{
-    std::string s = "(";
-    for (std::size_t i = 0; i < cells.size(); ++i)
-    {
-        s += (i ? " " : "") + cells[i];
-    }
-    return s + ")";
 }
 
 } // End anonymous namespace
@@ -312,7 +303,7 @@ void timeFunction::readTable
             d.fatalAt(key, "Keyword '" + key + "' in dictionary \""
                 + d.name() + "\": no column '" + name + "' in the header of "
                 + fileName + " (line " + std::to_string(headerLine)
-                + "); its columns are " + listCells(header));
+                + "); its columns are " + str(header));
         }
         return std::size_t(it - header.begin());
     };
@@ -384,7 +375,7 @@ void timeFunction::readTable
             {
                 fatalIOError(fileName, lineNo, "Table " + fileName + ": row"
                     " of " + std::to_string(cells.size()) + " cells "
-                    + listCells(cells) + " has no column "
+                    + str(cells) + " has no column "
                     + std::to_string(std::max(timeCol, valueCol))
                     + " (columns count from 0)", "file");
             }
@@ -394,7 +385,7 @@ void timeFunction::readTable
             fatalIOError(fileName, lineNo, "Table " + fileName + ": expected"
                 " two columns, time and value, found "
                 + std::to_string(cells.size()) + " cells "
-                + listCells(cells) + " (a CSV with a header names its"
+                + str(cells) + " (a CSV with a header names its"
                   " columns with timeColumn and valueColumn)", "file");
         }
 

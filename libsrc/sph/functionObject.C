@@ -4,6 +4,7 @@
 #include "functionObject.H"
 #include "functionObjects.H"
 #include "error.H"
+#include "formatting.H"
 
 #include <algorithm>
 #include <cmath>
@@ -25,16 +26,6 @@ const std::vector<std::string> types
     "probes", "freeSurfaceGauges", "forces", "energy", "surgeFront",
     "solidPoints"
 };
-
-std::string listOf(const std::vector<std::string>& words)
-{
-    std::string s = "(";
-    for (std::size_t i = 0; i < words.size(); ++i)
-    {
-        s += (i ? " " : "") + words[i];
-    }
-    return s + ")";
-}
 
 } // End anonymous namespace
 
@@ -186,7 +177,7 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
         {
             fatalIOError(functions->file(), functions->line(),
                 "Function object '" + name + "' is not in functions {};"
-                " its entries are " + listOf(fns.keys()), name);
+                " its entries are " + str(fns.keys()), name);
         }
     }
     for (const std::string& name : fns.keys())
@@ -203,7 +194,7 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
             fatalIOError(e.file(), e.line(), "Function object '" + name
                 + "' in " + fns.name() + " is not a sub-dictionary: expected "
                 + name + " { type <type>; ... } with type one of "
-                + listOf(types), name);
+                + str(types), name);
         }
         if
         (
@@ -268,7 +259,7 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
         {
             dict.fatalAt("type", "Function object '" + name
                 + "': unknown type '" + type + "'. Valid types are: "
-                + listOf(types));
+                + str(types));
         }
     }
     return all;

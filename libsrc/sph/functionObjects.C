@@ -207,63 +207,80 @@ table::table(std::string name, const dictionary& dict,
              const std::string& startTimeName, std::string file)
 :
     functionObject(std::move(name), dict, caseDir, startTimeName),
-    file_(std::move(file))
+    files_{std::move(file)}
 {}
 
 
 void table::sample(const solverSnapshot& s)
 {
-    const std::vector<scalar> row = values(s);
-    std::ofstream& os = output(file_);
-    errno = 0;
-    if (!headerWritten_)
+    const std::vector<std::vector<scalar>> all = rows(s);
+    for (std::size_t f = 0; f < files_.size(); ++f)
     {
-        writeHeader(os);
-        headerWritten_ = true;
+        std::ofstream& os = output(files_[f]);
+        errno = 0;
+        if (!headerWritten_)
+        {
+            writeFileHeader(os, f);
+        }
+        os << s.time;
+        for (const scalar v : all.at(f))
+        {
+            os << ' ' << v;
+        }
+        os << '\n';
+        os.flush();
+        if (!os)
+        {
+            // The stream keeps no reason; errno has the failed write's.
+            fatalError("Function object '" + name() + "': cannot write "
+                + outputPath(files_[f]).string() + ": "
+                + (errno ? std::strerror(errno) : "the stream failed"));
+        }
     }
-    os << s.time;
-    for (const scalar v : row)
-    {
-        os << ' ' << v;
-    }
-    os << '\n';
-    os.flush();
-    if (!os)
-    {
-        // The stream keeps no reason; errno has the failed write's.
-        fatalError("Function object '" + name() + "': cannot write "
-            + outputPath(file_).string() + ": "
-            + (errno ? std::strerror(errno) : "the stream failed"));
-    }
+    headerWritten_ = true;
 }
 
 
 // * * * * * * * * * * * * * * * * * * probes * * * * * * * * * * * * * * * //
 
+const std::vector<std::string> probes::fieldNames{"p", "U", "rho"};
+
+
 probes::probes(std::string name, const dictionary& dict,
                const std::filesystem::path& caseDir,
                const std::string& startTimeName, const sphModel& model)
 :
-    table(std::move(name), dict, caseDir, startTimeName, "p.dat")
+    table(std::move(name), dict, caseDir, startTimeName, "p.dat"),
+    fields_{"p"},
+    nDimensions_(model.nDimensions)
 {
     dict.checkKeywords(keywords({"fields", "probeLocations"}));
     if (dict.found("fields"))
     {
-        const auto fields = dict.get<std::vector<std::string>>("fields");
-        if (fields.empty())
+        fields_ = dict.get<std::vector<std::string>>("fields");
+        if (fields_.empty())
         {
             dict.fatalAt("fields", "Function object '" + this->name()
-                + "': fields is empty; probes samples (p)");
+                + "': fields is empty; probes samples " + str(fieldNames));
         }
-        for (const auto& f : fields)
+        std::vector<std::string> files;
+        for (const auto& f : fields_)
         {
-            if (f != "p")
+            if (std::find(fieldNames.begin(), fieldNames.end(), f)
+                == fieldNames.end())
             {
                 dict.fatalAt("fields", "Function object '" + this->name()
-                    + "': probes cannot sample field '" + f
-                    + "'; the only field supported is p");
+                    + "': probes cannot sample field '" + f + "'; the fields"
+                    " it samples are " + str(fieldNames));
             }
+            if (std::count(fields_.begin(), fields_.end(), f) > 1)
+            {
+                dict.fatalAt("fields", "Function object '" + this->name()
+                    + "': field '" + f + "' is listed twice");
+            }
+            files.push_back(f + ".dat");
         }
+        setFiles(files);
     }
     locations_ = readPoints(dict, "probeLocations", this->name(), model);
 }
@@ -271,43 +288,96 @@ probes::probes(std::string name, const dictionary& dict,
 
 std::vector<scalar> probes::values(const solverSnapshot& s) const
 {
+    return rows(s).front();
+}
+
+
+std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
+{
     if (!checked_)
     {
         warnOutsideDomain(name(), "probe", locations_, s.cells.grid,
                           2*s.model.h);
         checked_ = true;
     }
-    std::vector<scalar> p(locations_.size(), 0);
+    // Shepard means over the fluid within a support: sum f W V / sum W V.
+    const std::size_t n = locations_.size();
+    std::vector<scalar> p(n, 0), rho(n, 0);
+    std::vector<vec3> U(n, vec3{0, 0, 0});
     const particleFields& pf = s.particles;
     withKernel(s.model, [&](auto kernel)
     {
-        for (std::size_t k = 0; k < locations_.size(); ++k)
+        for (std::size_t k = 0; k < n; ++k)
         {
-            scalar sumW = 0, sumP = 0;
+            scalar sumW = 0, sumP = 0, sumRho = 0;
+            vec3 sumU{0, 0, 0};
             forEachFluidNear(s, kernel, toPoint(locations_[k]),
                 [&](const label j, const scalar r)
                 {
                     const scalar WV = kernel.W(r)*pf.mass[j]/pf.rho[j];
                     sumW += WV;
                     sumP += pf.p[j]*WV;
+                    sumRho += pf.rho[j]*WV;
+                    sumU += WV*pf.velocity[j];
                 });
-            p[k] = sumW > 0 ? sumP/sumW : 0;
+            if (sumW > 0)
+            {
+                p[k] = sumP/sumW;
+                rho[k] = sumRho/sumW;
+                U[k] = sumU/sumW;
+            }
         }
     });
-    return p;
+    std::vector<std::vector<scalar>> all;
+    for (const std::string& f : fields_)
+    {
+        if (f == "U")
+        {
+            std::vector<scalar> row;
+            for (const vec3& u : U)
+            {
+                row.push_back(u.x);
+                row.push_back(u.y);
+                if (nDimensions_ == 3) row.push_back(u.z);
+            }
+            all.push_back(row);
+        }
+        else
+        {
+            all.push_back(f == "p" ? p : rho);
+        }
+    }
+    return all;
 }
 
 
 void probes::writeHeader(std::ostream& os) const
 {
+    writeFileHeader(os, 0);
+}
+
+
+void probes::writeFileHeader(std::ostream& os, const std::size_t file) const
+{
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
         os << "# Probe " << k << ' ' << str(locations_[k], 10) << '\n';
     }
+    const std::string& field = fields_.at(file);
     os << "# Time";
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
-        os << " p" << k;
+        if (field == "U")
+        {
+            for (const char c : std::string(nDimensions_ == 3 ? "xyz" : "xy"))
+            {
+                os << " U" << k << c;
+            }
+        }
+        else
+        {
+            os << ' ' << field << k;
+        }
     }
     os << '\n';
 }
@@ -424,12 +494,7 @@ forces::forces(std::string name, const dictionary& dict,
     }
     if (body_ < 0)
     {
-        std::string list = "(";
-        for (std::size_t i = 0; i < walls.size(); ++i)
-        {
-            list += (i ? " " : "") + walls[i];
-        }
-        list += ")";
+        const std::string list = str(walls);
         std::string what = "there is no body '" + body + "'";
         for (const auto& b : bodies)
         {

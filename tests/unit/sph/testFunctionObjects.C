@@ -226,6 +226,53 @@ TEST(functionObjects, probesReadHydrostaticPressure)
 }
 
 
+TEST(functionObjects, probesOfVelocityAndDensity)
+{
+    // A uniform flow: the Shepard mean gives it back wherever the kernel
+    // sees fluid, 0 where it sees none; one file per field, U by
+    // component, in the order of fields.
+    SPHVCPM_DOUBLE_ONLY();
+    scratchDir tmp;
+    const tankScene tank({0.3, -0.2, 0});
+    auto fos = tank.read("flow { type probes; fields (U rho p);"
+        " probeLocations ((0.2 0.1 0) (0.2 0.25 0)); }\n", tmp.path());
+    ASSERT_EQ(fos.size(), 1u);
+    const auto* probe =
+        dynamic_cast<const functionObjects::probes*>(fos[0].get());
+    ASSERT_NE(probe, nullptr);
+    const auto rows = probe->rows(tank.snapshot());
+    ASSERT_EQ(rows.size(), 3u);
+    ASSERT_EQ(rows[0].size(), 4u);        // U: x and y of two probes
+    EXPECT_NEAR(rows[0][0], 0.3, 1e-12);
+    EXPECT_NEAR(rows[0][1], -0.2, 1e-12);
+    EXPECT_EQ(rows[0][2], 0);             // in the air
+    EXPECT_EQ(rows[0][3], 0);
+    ASSERT_EQ(rows[1].size(), 2u);        // rho
+    EXPECT_NEAR(rows[1][0], rho0, 1e-9);
+    EXPECT_EQ(rows[1][1], 0);
+    EXPECT_NEAR(rows[2][0], tankScene::hydrostatic(0.1),
+                0.01*tankScene::hydrostatic(0.1));
+    EXPECT_EQ(probe->values(tank.snapshot()), rows[0]);
+
+    fos[0]->execute(tank.snapshot(0.25));
+    const fs::path dir = tmp.path()/"postProcessing"/"flow"/"0";
+    const auto U = readLines(dir/"U.dat");
+    ASSERT_EQ(U.size(), 4u);
+    EXPECT_EQ(U[0], "# Probe 0 (0.2 0.1 0)");
+    EXPECT_EQ(U[2], "# Time U0x U0y U1x U1y");
+    const auto u = numbers(U[3]);
+    ASSERT_EQ(u.size(), 5u);
+    EXPECT_EQ(u[0], 0.25);
+    EXPECT_NEAR(u[1], 0.3, 1e-9);
+    const auto rho = readLines(dir/"rho.dat");
+    ASSERT_EQ(rho.size(), 4u);
+    EXPECT_EQ(rho[2], "# Time rho0 rho1");
+    const auto p = readLines(dir/"p.dat");
+    ASSERT_EQ(p.size(), 4u);
+    EXPECT_EQ(p[2], "# Time p0 p1");
+}
+
+
 TEST(functionObjects, gaugesFindTheFreeSurface)
 {
     // Exact double values in the written tables.
@@ -573,9 +620,15 @@ TEST(functionObjects, errorsNameTheEntry)
     }
     {
         const auto err = error(
-            "p { type probes; fields (p U); probeLocations ((0 0 0)); }\n");
+            "p { type probes; fields (p T); probeLocations ((0 0 0)); }\n");
         EXPECT_EQ(err.keyword(), "fields");
-        expectMessage(err, {"'U'", "p"});
+        expectMessage(err, {"'T'", "(p U rho)"});
+    }
+    {
+        const auto err = error(
+            "p { type probes; fields (p U p); probeLocations ((0 0 0)); }\n");
+        EXPECT_EQ(err.keyword(), "fields");
+        expectMessage(err, {"'p' is listed twice"});
     }
     {
         const auto err = error(
