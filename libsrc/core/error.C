@@ -1,5 +1,6 @@
 #include "error.H"
 
+#include <atomic>
 #include <csignal>
 #include <iostream>
 #include <mutex>
@@ -67,13 +68,15 @@ void fatalIOError(const std::string& file, int line,
 
 namespace
 {
-bool warnOnce = false;
+std::atomic<bool> warnOnce{false};
 std::mutex warnedMutex;
 std::set<std::string> warned;
 }
 
 void warnOnlyOnce(const bool once)
 {
+    const std::lock_guard<std::mutex> lock(warnedMutex);
+    warned.clear();
     warnOnce = once;
 }
 

@@ -197,6 +197,7 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     parallelFor(openmpExec{}, particles_.size(),
         pressureOp{particles_.view(), eos_});
     updateWallsOn(store);
+    wallsFreshIndex_ = timeIndex_;
 
     if (chosen == "cuda")
     {
@@ -575,6 +576,11 @@ void fsiSolver::setSoundSpeed()
             fatalIOError(file, 0, "coefSound needs gravity or an initial"
                 " velocity to set c0; give c0 instead", "coefSound");
         }
+    }
+
+    if (!postProcessTime_.empty())
+    {
+        return;   // the run weighed c0 against the scene; nothing runs here
     }
 
     // Weak compressibility needs c0 >= 10 U; the largest speed expected is
@@ -1068,6 +1074,25 @@ void fsiSolver::finishWrite()
 }
 
 
+void fsiSolver::refreshWalls()
+{
+    // The walls' pressures of the step's last force pass were extrapolated
+    // from the fluid at its start (or middle): extrapolate them from this
+    // state, as a restart or -postProcess does from a written time.
+    if (wallsFreshIndex_ == timeIndex_) return;
+    if (gpu_)
+    {
+        updateWallsGpu();
+    }
+    else
+    {
+        hostParticleStore store = hostStore();
+        updateWallsOn(store);
+    }
+    wallsFreshIndex_ = timeIndex_;
+}
+
+
 void fsiSolver::executeFunctions()
 {
     bool due = false, wallsDue = false;
@@ -1080,18 +1105,7 @@ void fsiSolver::executeFunctions()
     if (!due) return;
     if (wallsDue)
     {
-        // The walls' pressures of the step's last force pass were
-        // extrapolated from the fluid at its start (or middle): extrapolate
-        // them from this state, as -postProcess does from a written time.
-        if (gpu_)
-        {
-            updateWallsGpu();
-        }
-        else
-        {
-            hostParticleStore store = hostStore();
-            updateWallsOn(store);
-        }
+        refreshWalls();
     }
     if (gpu_)
     {
@@ -1122,6 +1136,11 @@ void fsiSolver::reportRemoved()
 
 void fsiSolver::run()
 {
+    if (!postProcessTime_.empty())
+    {
+        fatalError("fsiSolver::run: a solver made for -postProcess only"
+            " reads its time");
+    }
     schedule_.emplace(control_, time_);
 
     if (time_ >= control_.endTime*(1 - 1e-12))
@@ -1158,6 +1177,7 @@ void fsiSolver::run()
         {
             // On the GPU the host is free while the steps run: the write
             // goes on beside them.
+            refreshWalls();
             if (gpu_) gpuToHost();
             write(bool(gpu_));
             schedule_->written(time_, schedule_->name(time_), caseDir_,

@@ -4,6 +4,7 @@
 #include "postProcessTimes.H"
 #include "dictionary.H"
 #include "error.H"
+#include "formatting.H"
 #include "fsiSolver.H"
 #include "functionObject.H"
 #include "solidOnlySolver.H"
@@ -23,8 +24,45 @@ namespace
 // Drops what it is given: the solvers' set-up logs, one per time read.
 struct discardBuffer : std::streambuf
 {
-    int overflow(const int c) override { return c; }
+    int overflow(const int c) override { return traits_type::not_eof(c); }
 };
+
+// The entries of functions {} to evaluate: the named ones, else the
+// enabled ones (an entry that is no dictionary too, for readAll's error).
+std::vector<std::string> entriesToEvaluate(const dictionary& dict,
+    const std::vector<std::string>& named, const fs::path& dictFile)
+{
+    const entry& functions = dict.lookupEntry("functions");
+    if (!functions.isDict()) return {"functions"};   // readAll says why
+    const dictionary& fns = functions.dict();
+    for (const std::string& name : named)
+    {
+        if (!fns.findEntry(name))
+        {
+            fatalIOError(functions.file(), functions.line(),
+                "Function object '" + name + "' is not in functions {};"
+                " its entries are " + str(fns.keys()), name);
+        }
+    }
+    if (!named.empty()) return named;
+
+    std::vector<std::string> enabled;
+    for (const std::string& name : fns.keys())
+    {
+        const entry& e = *fns.findEntry(name);
+        if (!e.isDict() || e.dict().getOrDefault<bool>("enabled", true))
+        {
+            enabled.push_back(name);
+        }
+    }
+    if (enabled.empty())
+    {
+        fatalError("functions {} of " + dictFile.string() + " has no"
+            " enabled entry to evaluate (-func NAME evaluates one with"
+            " enabled false)");
+    }
+    return enabled;
+}
 
 } // End anonymous namespace
 
@@ -53,6 +91,36 @@ void postProcessTimes(const fs::path& caseDir,
                : std::string()));
     }
 
+    // Before any time is read: the entries, where they write, and the
+    // times (a solver write has uniform/time; one without it past the
+    // case's first time would be read as an initial state).
+    const std::vector<std::string> names =
+        entriesToEvaluate(functionsDict, settings.functions, dictFile);
+    for (const std::string& name : names)
+    {
+        const fs::path dir = caseDir/"postProcessing"/name/times.front().name;
+        std::error_code ec;
+        if (!settings.overwrite && fs::is_directory(dir)
+         && !fs::is_empty(dir, ec))
+        {
+            fatalError("Function object '" + name + "': " + dir.string()
+                + " already holds tables (a run's own, maybe, sampled at"
+                " every step): give -overwrite to write over them, or"
+                " remove them");
+        }
+    }
+    const std::string firstName = findTimes(caseDir).front().name;
+    for (const timeInstant& t : times)
+    {
+        if (t.name != firstName
+         && !fs::is_regular_file(caseDir/t.name/"uniform"/"time"))
+        {
+            fatalError("Time " + t.name + " of " + caseDir.string() + " has"
+                " no uniform/time: it cannot be told from an initial state,"
+                " and would be read as one. Leave it out (-time)");
+        }
+    }
+
     // Each time repeats the case's warnings: give each once.
     warnOnlyOnce(true);
     discardBuffer discard;
@@ -65,26 +133,7 @@ void postProcessTimes(const fs::path& caseDir,
         {
             functionsDict.setCaseDimensions(s.model.nDimensions);
             functions = functionObject::readAll(functionsDict, caseDir,
-                times.front().name, s.model, s.bodies, hasFluid,
-                settings.functions);
-            if (functions.empty())
-            {
-                fatalError("functions {} of " + dictFile.string() + " has no"
-                    " enabled entry to evaluate (-func NAME evaluates one"
-                    " with enabled false)");
-            }
-            for (const auto& f : functions)
-            {
-                std::error_code ec;
-                if (!settings.overwrite && fs::exists(f->directory())
-                 && !fs::is_empty(f->directory(), ec))
-                {
-                    fatalError("Function object '" + f->name() + "': "
-                        + f->directory().string() + " already holds tables"
-                        " (a run's own, maybe, sampled at every step): give"
-                        " -overwrite to write over them, or remove them");
-                }
-            }
+                times.front().name, s.model, s.bodies, hasFluid, names);
         }
         for (const auto& f : functions)
         {
@@ -103,6 +152,17 @@ void postProcessTimes(const fs::path& caseDir,
         else
         {
             const fsiSolver solver(caseDir, quiet, "cpu", t.name);
+            // Particles beyond the domain's bounds are removed as the
+            // solver reads them; the run sampled them once more, before its
+            // next step removed them.
+            for (const bodyInfo& b : solver.bodies())
+            {
+                if (b.nRemoved > 0)
+                {
+                    log << "    " << b.name << ": " << b.nRemoved
+                        << " particles beyond the domain left out\n";
+                }
+            }
             sampleAll(solver.snapshot(), true);
         }
     }

@@ -54,7 +54,8 @@ solidOnlySolver::solidOnlySolver
     caseDir_(caseDir),
     log_(log),
     control_(timeControl::read(caseDir)),
-    startTimeName_(startTimeName)
+    startTimeName_(startTimeName),
+    postProcessing_(postProcessing)
 {
     const timeState state = readTimeState(caseDir_, startTimeName_);
     time_ = state.value;
@@ -142,6 +143,11 @@ void solidOnlySolver::write()
 
 void solidOnlySolver::run()
 {
+    if (postProcessing_)
+    {
+        fatalError("solidOnlySolver::run: a solver made for -postProcess"
+            " only reads its time");
+    }
     schedule_.emplace(control_, time_);
     if (time_ >= control_.endTime*(1 - 1e-12))
     {

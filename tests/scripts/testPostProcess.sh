@@ -124,7 +124,32 @@ mistake "-dict of no file" "-dict nothere: there is no file .*nothere" -postProc
 mistake "-latestTime without -postProcess" "-latestTime is an option of -postProcess, which was not given" -latestTime
 mistake "-postProcess -device cuda" "-postProcess runs on the CPU" -postProcess -device cuda
 mistake "-time of no time" "-time" -postProcess -time 5:6
+mistake "-funcs '()'" "-funcs '\(\)' names no function object" -postProcess -funcs '()'
 check "the mistakes wrote no time directory" [ "$(cd "$c" && ls -d [0-9]* | tr '\n' ' ')" = "0 0.1 0.2 " ]
+# A time without uniform/time (copied in by hand, say) would be read as an
+# initial state: refused before anything is read or written.
+mv "$c/0.1/uniform" "$scratch/uniform.0.1"
+rm -rf "$c/postProcessing"
+mistake "a time without uniform/time" \
+    "Time 0.1 of .* has no uniform/time: it cannot be told from an initial state" -postProcess
+check "a time without uniform/time: no table written" [ ! -e "$c/postProcessing" ]
+mv "$scratch/uniform.0.1" "$c/0.1/uniform"
+
+# --- the walls' pressures as written: those of the written state ----------
+# With a forces function due at a write or not, the run writes the same
+# walls (both extrapolated from the state written).
+d="$scratch/damBreak"
+cp -r "$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D" "$d"
+sed -i 's/^endTime .*/endTime 0.04;/; s/^writeInterval .*/writeInterval 0.02;/' "$d/system/controlDict"
+generateParticles -case "$d" > "$scratch/log.gen" 2>&1
+cp -r "$d" "$d.noForces"
+sed -i '/wallForce/d' "$d.noForces/system/controlDict"
+sphVcpmFsi -case "$d" > "$scratch/log.forces" 2>&1
+sphVcpmFsi -case "$d.noForces" > "$scratch/log.noForces" 2>&1
+check "dam break with and without forces: both run" \
+    [ -f "$d/0.04/box/p" -a -f "$d.noForces/0.04/box/p" ]
+check "dam break with and without forces: the walls' p written alike at 0.02 and 0.04" \
+    bash -c 'cmp -s "$1/0.02/box/p" "$2/0.02/box/p" && cmp -s "$1/0.04/box/p" "$2/0.04/box/p"' _ "$d" "$d.noForces"
 
 # --- solids alone: solidPoints ---------------------------------------------
 s="$scratch/beam"

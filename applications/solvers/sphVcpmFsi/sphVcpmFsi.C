@@ -35,6 +35,11 @@ int postProcess(const argList& args)
     postProcessSettings settings;
     settings.dictFile = args.option("dict");
     settings.functions = args.wordListOption("funcs");
+    if (args.found("funcs") && settings.functions.empty())
+    {
+        fatalError("-funcs '" + args.option("funcs") + "' names no function"
+            " object: leave it out to evaluate every enabled one");
+    }
     if (args.found("func"))
     {
         settings.functions.push_back(args.option("func"));
