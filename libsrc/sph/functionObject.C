@@ -238,7 +238,8 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
         else if (type == "forces")
         {
             all.push_back(std::make_unique<forces>
-                (name, dict, caseDir, startTimeName, bodies));
+                (name, dict, caseDir, startTimeName, bodies,
+                 model.nDimensions));
         }
         else if (type == "energy")
         {

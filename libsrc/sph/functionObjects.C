@@ -473,13 +473,26 @@ void freeSurfaceGauges::writeHeader(std::ostream& os) const
 forces::forces(std::string name, const dictionary& dict,
                const std::filesystem::path& caseDir,
                const std::string& startTimeName,
-               const std::vector<bodyInfo>& bodies)
+               const std::vector<bodyInfo>& bodies, const int nDimensions)
 :
     table(std::move(name), dict, caseDir, startTimeName, "force.dat"),
     body_(-1)
 {
-    dict.checkKeywords(keywords({"body"}));
+    dict.checkKeywords(keywords({"body", "CofR"}));
     const std::string body = dict.get<std::string>("body");
+    if (dict.found("CofR"))
+    {
+        // As OpenFOAM's forces: the moment about this point too.
+        CofR_ = dict.get<vec3>("CofR");
+        if (nDimensions == 2 && CofR_.z != 0)
+        {
+            dict.fatalAt("CofR", "Function object '" + this->name()
+                + "': CofR of a 2D case must have z = 0 (the moment is"
+                " about the z axis through it), found " + str(CofR_));
+        }
+        moment_ = true;
+        setFiles({"force.dat", "moment.dat"});
+    }
     std::vector<std::string> walls;
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
@@ -512,6 +525,12 @@ forces::forces(std::string name, const dictionary& dict,
 
 std::vector<scalar> forces::values(const solverSnapshot& s) const
 {
+    return rows(s).front();
+}
+
+
+std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
+{
     const particleFields& pf = s.particles;
     const sphModel& m = s.model;
     const std::uint8_t body = std::uint8_t(body_);
@@ -519,7 +538,10 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
     const scalar fourNu = 4*m.nu;
     const scalar eta2 = m.eta2();
     const boundaryContact contact = boundaryContactOf(m);
-    sumVec F{0, 0, 0};
+    // The force and its moment about CofR, each wall particle's force
+    // acting at its centre.
+    struct forceMoment { sumVec F, M; };
+    forceMoment sum{{0, 0, 0}, {0, 0, 0}};
 
     withKernel(m, [&](auto kernel)
     {
@@ -561,17 +583,45 @@ std::vector<scalar> forces::values(const solverSnapshot& s) const
             });
             return f;
         };
-        F = parallelReduce(openmpExec{}, pf.size(),
-                           [&](const label w) { return toSum(onWall(w)); },
-                           sumVec{0, 0, 0}, vecSum{});
+        sum = parallelReduce(openmpExec{}, pf.size(),
+            [&](const label w)
+            {
+                const sumVec f = toSum(onWall(w));
+                const sumVec arm = toSum(toVec3(pf.position[w]) - CofR_);
+                return forceMoment{f, cross(arm, f)};
+            },
+            forceMoment{{0, 0, 0}, {0, 0, 0}},
+            [](const forceMoment& a, const forceMoment& b)
+            {
+                return forceMoment{a.F + b.F, a.M + b.M};
+            });
     });
-    return {scalar(F.x), scalar(F.y), scalar(F.z)};
+    const sumVec& F = sum.F;
+    const sumVec& M = sum.M;
+    if (!moment_)
+    {
+        return {{scalar(F.x), scalar(F.y), scalar(F.z)}};
+    }
+    return {{scalar(F.x), scalar(F.y), scalar(F.z)},
+            {scalar(M.x), scalar(M.y), scalar(M.z)}};
 }
 
 
 void forces::writeHeader(std::ostream& os) const
 {
     os << "# Time Fx Fy Fz\n";
+}
+
+
+void forces::writeFileHeader(std::ostream& os, const std::size_t file) const
+{
+    if (file == 0)
+    {
+        writeHeader(os);
+        return;
+    }
+    os << "# Moment about CofR " << str(CofR_, 10) << "\n"
+       << "# Time Mx My Mz\n";
 }
 
 

@@ -2,7 +2,8 @@
 # sphVcpmFsi -postProcess (docs/postProcessing.md): the function objects
 # evaluated on written times must give what the run sampled at those
 # times. On the short rolling tank (a moving tank, a plate clamped to it,
-# oil) every type samples at the write times in the run; the tables are
+# oil; the tank's force with its moment about the pivot) every type
+# samples at the write times in the run; the tables are
 # moved aside and -postProcess writes them again from the time
 # directories: identical on the CPU (binary writes), within round-off
 # where the run was on the GPU. Likewise solidPoints in a run of solids
@@ -57,7 +58,7 @@ s = s[:s.index("functions\n{")] + """functions
     tip { type solidPoints; body plate; points ((0.3045 0.1145 0)); %s }
     levels { type freeSurfaceGauges; locations ((0.0185 -0.05 0) (0.5905 -0.05 0));
              maxHeight 0.35; %s }
-    tankForce { type forces; body tank; %s }
+    tankForce { type forces; body tank; CofR (0.3045 0 0); %s }
     plateForce { type forces; body plate; %s }
     probe { type probes; probeLocations ((0.03 0.01 0) (0.3 0.05 0)); %s }
     energy { type energy; %s }

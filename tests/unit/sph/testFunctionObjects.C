@@ -387,6 +387,60 @@ TEST(functionObjects, forcesOfStillWaterCarryItsWeight)
 }
 
 
+TEST(functionObjects, forcesMomentAboutCofR)
+{
+    // Still water on the tank: about the floor's middle the weight and the
+    // two sides' pushes balance; about the left bottom corner the weight,
+    // rho g H L at x = L/2, turns clockwise: Mz = -rho g H L^2/2 (the
+    // sides' rho g H^2/2 at y = H/3 cancel). The same moment from the
+    // force and the arm: M(a) = M(b) + (b - a) x F.
+    SPHVCPM_DOUBLE_ONLY();
+    scratchDir tmp;
+    tankScene tank;
+    const scalar weight = rho0*gMag*H*L;
+    const auto rowsAbout = [&](const std::string& CofR)
+    {
+        auto fos = tank.read("f { type forces; body tank; CofR " + CofR
+                             + "; }\n", tmp.path());
+        const auto* t =
+            dynamic_cast<const functionObjects::table*>(fos.at(0).get());
+        return t->rows(tank.snapshot());
+    };
+    const auto middle = rowsAbout("(0.2 0 0)");
+    ASSERT_EQ(middle.size(), 2u);
+    ASSERT_EQ(middle[1].size(), 3u);
+    EXPECT_NEAR(middle[1][2], 0, 1e-9*weight*L);
+    EXPECT_EQ(middle[1][0], 0);
+    EXPECT_EQ(middle[1][1], 0);
+    const auto corner = rowsAbout("(0 0 0)");
+    EXPECT_NEAR(corner[1][2], -weight*L/2, 0.01*weight*L/2);
+    // About (0, 0): M = M(0.2, 0) + ((0.2, 0) - (0, 0)) x F.
+    EXPECT_NEAR(corner[1][2], middle[1][2] + 0.2*corner[0][1],
+                1e-9*weight*L);
+    // Without CofR: the force alone, as before.
+    const auto forceOnly =
+        tank.values("f { type forces; body tank; }", tmp.path());
+    EXPECT_EQ(forceOnly, corner[0]);
+
+    // The files: force.dat and moment.dat, headed.
+    auto fos = tank.read("f { type forces; body tank; CofR (0 0 0); }\n",
+                         tmp.path());
+    fos[0]->execute(tank.snapshot(0.5));
+    const fs::path dir = tmp.path()/"postProcessing"/"f"/"0";
+    const auto force = readLines(dir/"force.dat");
+    ASSERT_EQ(force.size(), 2u);
+    EXPECT_EQ(force[0], "# Time Fx Fy Fz");
+    const auto moment = readLines(dir/"moment.dat");
+    ASSERT_EQ(moment.size(), 3u);
+    EXPECT_EQ(moment[0], "# Moment about CofR (0 0 0)");
+    EXPECT_EQ(moment[1], "# Time Mx My Mz");
+    const auto m = numbers(moment[2]);
+    ASSERT_EQ(m.size(), 4u);
+    EXPECT_EQ(m[0], 0.5);
+    EXPECT_NEAR(m[3], corner[1][2], 1e-9*std::fabs(corner[1][2]));
+}
+
+
 TEST(functionObjects, forcesViscousDragPullsTheWall)
 {
     scratchDir tmp;
@@ -629,6 +683,12 @@ TEST(functionObjects, errorsNameTheEntry)
             "p { type probes; fields (p U p); probeLocations ((0 0 0)); }\n");
         EXPECT_EQ(err.keyword(), "fields");
         expectMessage(err, {"'p' is listed twice"});
+    }
+    {
+        const auto err = error(
+            "f { type forces; body tank; CofR (0 0 1); }\n");
+        EXPECT_EQ(err.keyword(), "CofR");
+        expectMessage(err, {"'f'", "z = 0", "(0 0 1)"});
     }
     {
         const auto err = error(
