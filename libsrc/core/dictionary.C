@@ -678,6 +678,13 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
         }
         const std::string guess =
             dictionaryDetail::closest(e.keyword(), valid);
+        // A parameter of an #include'd file that several dictionaries
+        // share need not be used in each, unless it reads as a misspelling
+        // of a keyword of this one.
+        if (guess.empty() && !e.file().empty() && e.file() != file_)
+        {
+            continue;
+        }
         fatalIOError(e.file(), e.line(), "Unknown keyword '" + e.keyword()
             + "' in dictionary \"" + name_ + "\"."
             + (guess.empty() ? "" : " Did you mean '" + guess + "'?")

@@ -1,8 +1,10 @@
 #!/bin/bash
 # Case input as OpenFOAM users write it: variables in
 # generateParticlesDict, some from a file included through $FOAM_CASE
-# (set by the application), a switch written 1, and 'value uniform' in a
-# field file of 0/. A misspelled keyword that no $name uses still stops.
+# (set by the application) with parameters of other dictionaries too, a
+# switch written 1, and 'value uniform' in a field file of 0/. A
+# misspelled keyword that no $name uses still stops, also from the
+# included file.
 . "$(dirname "$0")/testLib.sh"
 
 # The same case written with literal values: the particles to expect.
@@ -14,7 +16,9 @@ check "generateParticles on the literal case (exit 0)" [ $? -eq 0 ]
 
 run="$scratch/case"
 cp -r "$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D" "$run"
-printf 'L 0.8;\nH 0.5;\n' > "$run/system/caseParams"
+# The parameters of the whole case, some for other dictionaries (gateE,
+# runEnd): let pass here.
+printf 'L 0.8;\nH 0.5;\ngateE 1e6;\nrunEnd 2;\n' > "$run/system/caseParams"
 cat > "$run/system/generateParticlesDict" <<'DICT'
 #include "$FOAM_CASE/system/caseParams"
 nDimensions     2;
@@ -51,6 +55,18 @@ generateParticles -case "$run" > "$scratch/log.misspelt" 2>&1
 check "unused misspelt keyword: exit 1" [ $? -eq 1 ]
 expectIn "unused misspelt keyword: named" "$scratch/log.misspelt" \
     "Unknown keyword 'colunmH' in dictionary"
+
+# An included entry that reads as a misspelling of a keyword here: the
+# error names the included file and its line.
+sed -i 's/^columnH 0.4;/columnH 0.4;/; /^colunmH/d' "$run/system/generateParticlesDict"
+printf 'nDimension 2;\n' >> "$run/system/caseParams"
+generateParticles -case "$run" > "$scratch/log.includedMisspelt" 2>&1
+check "included misspelt keyword: exit 1" [ $? -eq 1 ]
+expectIn "included misspelt keyword: named, with the keyword meant" "$scratch/log.includedMisspelt" \
+    "Unknown keyword 'nDimension' .*Did you mean 'nDimensions'\?"
+expectIn "included misspelt keyword: the included file's line" "$scratch/log.includedMisspelt" \
+    "file: .*system/caseParams at line 5"
+sed -i '/^nDimension /d' "$run/system/caseParams"
 
 # value uniform in 0/water/U: read (particlesToVTK reads every field), and
 # a scalar there is an error naming the field.
