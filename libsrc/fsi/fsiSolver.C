@@ -419,6 +419,25 @@ void fsiSolver::readStartTime()
                     + std::to_string(ids[i]) + " has a non-positive"
                     " density or mass");
             }
+            // Every fluid and wall particle carries rho0 dp^d: a mass of
+            // another density (a wall given its material's rho, rho0
+            // changed since generateParticles) would make walls push as
+            // if denser, or a second fluid the equation of state undoes.
+            if (std::fabs(particles_.mass[k] - defaultMass)
+                > 1e-4*defaultMass)
+            {
+                fatalError("Body " + body.name() + " of time "
+                    + startTimeName_ + ": particle id "
+                    + std::to_string(ids[i]) + " has mass "
+                    + str(particles_.mass[k]) + ", a density of "
+                    + str(particles_.mass[k]/std::pow(dp, nDim)) + " kg/m^3"
+                    " over dp^" + std::to_string(nDim) + ", but rho0 of"
+                    " constant/fluidProperties is " + str(model_.rho0)
+                    + ": fluid and wall particles all carry the fluid's"
+                    " density (one fluid phase; a rigid wall's material does"
+                    " not enter). Run generateParticles again after changing"
+                    " rho0, without rho in fluid or wall bodies");
+            }
         }
         log_<< "    " << body.name() << " (" << bodyTypeName(body.type())
             << "): " << n << " particles\n";

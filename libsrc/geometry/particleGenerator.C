@@ -221,6 +221,23 @@ void particleGenerator::readBody
             dict.fatalAt("rho", "Keyword 'rho': the density of body '" + name
                 + "' must be positive, found " + shapeDetail::str(spec.rho));
         }
+        // One fluid, whose density every fluid and wall particle carries
+        // in the SPH sums: a wall's material does not enter (walls are
+        // rigid), and a second fluid density would be silently undone by
+        // the equation of state.
+        const std::optional<scalar> rho0 = type == bodyType::solid
+            ? std::nullopt : fluidRho0();
+        if (rho0 && std::fabs(spec.rho - *rho0) > 1e-9*(*rho0))
+        {
+            dict.fatalAt("rho", "Keyword 'rho' of " + bodyTypeName(type)
+                + " body '" + name + "': " + shapeDetail::str(spec.rho)
+                + " differs from rho0 " + shapeDetail::str(*rho0) + " of"
+                " constant/fluidProperties. Fluid and wall particles all"
+                " carry the fluid's density (one fluid phase; a rigid wall's"
+                " own material does not enter the SPH sums): leave rho out"
+                + (type == bodyType::fluid ? std::string(", or set rho0")
+                                           : std::string()));
+        }
     }
     else
     {
@@ -240,6 +257,27 @@ void particleGenerator::readBody
 }
 
 
+std::optional<scalar> particleGenerator::fluidRho0()
+{
+    if (rho0_) return rho0_;
+    const fs::path file = caseDir_/"constant"/"fluidProperties";
+    if (!fs::is_regular_file(file))
+    {
+        return std::nullopt;
+    }
+    const dictionary props = dictionary::fromFile(file);
+    const scalar rho0 =
+        props.getDimensioned<scalar>("rho0", dimensions::density());
+    if (!(rho0 > 0))
+    {
+        props.fatalAt("rho0", "Keyword 'rho0': the reference density"
+            " must be positive, found " + shapeDetail::str(rho0));
+    }
+    rho0_ = rho0;
+    return rho0_;
+}
+
+
 scalar particleGenerator::defaultRho
 (
     const entry& body,
@@ -252,27 +290,11 @@ scalar particleGenerator::defaultRho
 
     if (type != bodyType::solid)
     {
-        if (!rho0_)
-        {
-            const fs::path file = caseDir_/"constant"/"fluidProperties";
-            if (!fs::is_regular_file(file))
-            {
-                fatalIOError(body.file(), body.line(), what + ", and "
-                    + file.string() + " (whose rho0 is the default density of"
-                      " fluids and walls) does not exist: give rho in the body"
-                      " or rho0 in constant/fluidProperties", "rho");
-            }
-            const dictionary props = dictionary::fromFile(file);
-            const scalar rho0 =
-                props.getDimensioned<scalar>("rho0", dimensions::density());
-            if (!(rho0 > 0))
-            {
-                props.fatalAt("rho0", "Keyword 'rho0': the reference density"
-                    " must be positive, found " + shapeDetail::str(rho0));
-            }
-            rho0_ = rho0;
-        }
-        return *rho0_;
+        if (const std::optional<scalar> rho0 = fluidRho0()) return *rho0;
+        fatalIOError(body.file(), body.line(), what + ", and "
+            + (caseDir_/"constant"/"fluidProperties").string() + " (whose"
+              " rho0 is the density of fluids and walls) does not exist:"
+              " give rho0 there", "rho");
     }
 
     if (!solidProperties_)

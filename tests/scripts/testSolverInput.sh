@@ -140,6 +140,13 @@ expectFatal "Verlet with shifting" "use timeScheme symplectic with shifting" "sp
 fresh; sed -i 's/^rho0 .*/rho0 -1000;/' "$scratch/c/constant/fluidProperties"
 expectFatal "negative rho0" "rho0" "fluidProperties"
 
+# rho0 changed after generateParticles: the masses of 0/ carry the old
+# density (walls would push as if denser): refused, naming the remedy.
+fresh; sed -i 's/^rho0 .*/rho0 998;/' "$scratch/c/constant/fluidProperties"
+expectFatal "rho0 changed since generateParticles" \
+    "Body box of time 0: particle id [0-9]+ has mass .*, a density of 1000 kg/m\\^3 over dp\\^2, but rho0 of constant/fluidProperties is 998" \
+    "Run generateParticles again after changing rho0"
+
 fresh; sed -i 's/^coefSound .*/coefSound 20; c0 30;/' "$scratch/c/constant/fluidProperties"
 expectFatal "both c0 and coefSound" "exactly one of c0" "fluidProperties"
 

@@ -458,6 +458,11 @@ TEST(particleGenerator, propertyFileDensities)
     particleGenerator gen(c.path());
     gen.generate();
     EXPECT_EQ(bodyNamed(gen, "water").scalarField("rho")[0], 997);
+    // rho equal to rho0 may be written out.
+    testCase same(replaced(exampleDict, "type        wall;",
+        "type        wall; rho 997;"), "rho0 997;\n",
+        "gate { rho 1200; E 1e9; nu 0.3; }\n");
+    EXPECT_NO_THROW(particleGenerator(same.path()).generate());
     EXPECT_EQ(bodyNamed(gen, "tank").scalarField("rho")[0], 997);
     EXPECT_EQ(bodyNamed(gen, "gate").scalarField("rho")[0], 1200);
 
@@ -576,6 +581,16 @@ std::vector<badCase> badCases()
         {"negativeRho", replaced(d, "type        fluid;",
          "type        fluid;\n        rho -5;"), where::dict, "rho -5",
          {"Keyword 'rho'", "must be positive", "'water'"}},
+        // One fluid density for fluids and walls: a wall's material, or a
+        // second fluid, would be silently wrong in the solver.
+        {"wallRhoOfItsMaterial", replaced(d, "type        wall;",
+         "type        wall; rho 7800;"), where::dict, "rho 7800",
+         {"Keyword 'rho' of wall body 'tank': 7800 differs from rho0 1000",
+          "leave rho out"}},
+        {"secondFluidDensity", replaced(d, "type        fluid;",
+         "type        fluid;\n        rho 800;"), where::dict, "rho 800",
+         {"Keyword 'rho' of fluid body 'water': 800 differs from rho0 1000",
+          "one fluid phase", "or set rho0"}},
         {"velocityOutOfPlane", replaced(d, "U           (0.5 0 0);",
          "U           (0.5 0 1);"), where::dict, "(0.5 0 1)",
          {"Keyword 'U'", "z component"}},
