@@ -68,9 +68,7 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     }
     if (chosen == "cuda" && !gpuAvailable())
     {
-        const std::string why = cudaBackendBuilt()
-          ? cudaDeviceInfo().reason
-          : "this build has no CUDA backend (nvcc was not found)";
+        const std::string why = cudaDeviceInfo().reason;
         const std::string what = "device cuda was asked for, but no GPU can"
             " be used: " + why + ". Run on the CPU with -device cpu (or"
             " device cpu; in system/controlDict), or let -device auto fall"

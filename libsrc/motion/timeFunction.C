@@ -42,21 +42,24 @@ std::string unquote(const std::string& s)
     return s;
 }
 
-// Cells of a line: comma-separated when it has a comma, else separated by
-// whitespace.
+// Cells of a line: semicolon-separated when it has a semicolon (the CSV of
+// DualSPHysics and of spreadsheets set to a decimal comma), else
+// comma-separated when it has a comma, else separated by whitespace.
 std::vector<std::string> splitCells(const std::string& line)
 {
     std::vector<std::string> cells;
-    if (line.find(',') != std::string::npos)
+    const char separator = line.find(';') != std::string::npos ? ';'
+        : line.find(',') != std::string::npos ? ',' : ' ';
+    if (separator != ' ')
     {
         std::istringstream is(line);
         std::string cell;
-        while (std::getline(is, cell, ','))
+        while (std::getline(is, cell, separator))
         {
             cells.push_back(unquote(trim(cell)));
         }
-        // "a,b," ends with an empty cell that getline does not return.
-        if (line.back() == ',') cells.push_back("");
+        // "a;b;" ends with an empty cell that getline does not return.
+        if (line.back() == separator) cells.push_back("");
     }
     else
     {

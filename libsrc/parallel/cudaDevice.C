@@ -238,8 +238,16 @@ void cudaSynchronize(const char* what)
 
 #else // No CUDA in this build: answer the questions, refuse the memory.
 
+// Why, as configured (CMakeLists.txt).
 static const char* const noCuda =
-    "this build has no CUDA backend (built without nvcc)";
+#ifdef SPHVCPM_CUDA_OFF
+    "this build has no CUDA backend: it was configured without it"
+    " (Allwmake -no-cuda, or -DSPHVCPM_CUDA=OFF); run ./Allwmake without"
+    " -no-cuda to build it";
+#else
+    "this build has no CUDA backend: nvcc was not found when it was"
+    " configured (Allwmake looks on the PATH and in /usr/local/cuda/bin)";
+#endif
 
 bool cudaBackendBuilt()
 {

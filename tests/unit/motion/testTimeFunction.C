@@ -369,6 +369,20 @@ TEST(timeFunction, tableColumnsByNumber)
         "units degrees;\n", true);
     EXPECT_NEAR(a.value(2), 6*degree, 1e-15);
 
+    // DualSPHysics's semicolon CSV, with its header: by name and by number.
+    dir.write("constant/piston.csv",
+              "time [s];x [m]\n0;0\n0.5;0.1\n1;0.3\n");
+    const timeFunction named = readFunction(dir, "type table;\nfile"
+        " \"constant/piston.csv\";\ntimeColumn \"time [s]\";\n"
+        "valueColumn \"x [m]\";\n", false);
+    EXPECT_DOUBLE_EQ(named.value(0.75), 0.2);
+    dir.write("constant/pistonNoHeader.csv", "0;0\n0.5;0.1\n1;0.3;\n");
+    EXPECT_THROW(readFunction(dir, "type table;\nfile"
+        " \"constant/pistonNoHeader.csv\";\n", false), FatalError);
+    dir.write("constant/pistonNoHeader.csv", "0;0\n0.5;0.1\n1;0.3\n");
+    EXPECT_DOUBLE_EQ(readFunction(dir, "type table;\nfile"
+        " \"constant/pistonNoHeader.csv\";\n", false).value(0.25), 0.05);
+
     const std::string motion = motionFile(dir);
     const auto fails = [&](const std::string& body, const std::string& file,
                            const int line,

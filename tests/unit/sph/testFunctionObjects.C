@@ -226,6 +226,38 @@ TEST(functionObjects, probesReadHydrostaticPressure)
 }
 
 
+TEST(functionObjects, probesAreDryAboveTheSurface)
+{
+    // Just above the still surface (y = H + 0.7 dp) a few particles are in
+    // reach but fill under half the support: with wetFraction 0.5 dry, 0;
+    // by default (any fluid in reach) their mean. Just below it
+    // (H - 0.5 dp) and on the side wall's face under water (the walls fill
+    // the other half), wet either way.
+    scratchDir tmp;
+    tankScene tank;
+    const std::string points = " probeLocations ((0.2 0.207 0) (0.2 0.195 0)"
+        " (0 0.1 0) (0 0.195 0)); }";
+    const auto p = tank.values("p { type probes; wetFraction 0.5;" + points,
+                               tmp.path());
+    ASSERT_EQ(p.size(), 4u);
+    EXPECT_EQ(p[0], 0);
+    EXPECT_GT(p[1], 0);
+    EXPECT_NEAR(p[2], tankScene::hydrostatic(0.1),
+                0.02*tankScene::hydrostatic(0.1));
+    EXPECT_GT(p[3], 0);
+    const auto any = tank.values("p { type probes;" + points, tmp.path());
+    EXPECT_GT(any[0], 0);
+    EXPECT_EQ(any[1], p[1]);
+    EXPECT_EQ(any[2], p[2]);
+    const auto err = catchFatal([&]()
+    {
+        tank.read("p { type probes; wetFraction 1.5;" + points, tmp.path());
+    });
+    EXPECT_EQ(err.keyword(), "wetFraction");
+    expectMessage(err, {"between 0 and 1", "1.5"});
+}
+
+
 TEST(functionObjects, probesOfVelocityAndDensity)
 {
     // A uniform flow: the Shepard mean gives it back wherever the kernel
