@@ -666,6 +666,8 @@ std::size_t dictionary::size() const
 
 void dictionary::checkKeywords(const std::vector<std::string>& valid) const
 {
+    // Entries of #include'd files this dictionary does not read, by file.
+    std::vector<std::pair<std::string, std::vector<std::string>>> unread;
     for (const auto& e : entries_)
     {
         if
@@ -680,9 +682,17 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
             dictionaryDetail::closest(e.keyword(), valid);
         // A parameter of an #include'd file that several dictionaries
         // share need not be used in each, unless it reads as a misspelling
-        // of a keyword of this one.
+        // of a keyword of this one: a warning names them.
         if (guess.empty() && !e.file().empty() && e.file() != file_)
         {
+            auto it = std::find_if(unread.begin(), unread.end(),
+                [&](const auto& u) { return u.first == e.file(); });
+            if (it == unread.end())
+            {
+                unread.push_back({e.file(), {}});
+                it = unread.end() - 1;
+            }
+            it->second.push_back(e.keyword());
             continue;
         }
         fatalIOError(e.file(), e.line(), "Unknown keyword '" + e.keyword()
@@ -690,6 +700,13 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
             + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
             + " Valid keywords are: " + str(valid),
             e.keyword());
+    }
+    for (const auto& [file, keywords] : unread)
+    {
+        warning("Dictionary \"" + name_ + "\" does not read " + str(keywords)
+            + " of the file it #includes: parameters for other dictionaries"
+            " are fine there, a keyword meant for this one is not read."
+            " Valid keywords are: " + str(valid), file);
     }
 }
 

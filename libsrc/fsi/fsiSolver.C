@@ -366,6 +366,8 @@ void fsiSolver::readStartTime()
     }
     label nextSolid = 0;   // the solids' order in the coupling arrays
     const scalar defaultMass = model_.rho0*std::pow(dp, nDim);
+    const scalar massTolerance =
+        std::max(1e-3, 5*std::pow(10.0, -control_.writePrecision));
     label k = 0;
     for (std::size_t b = 0; b < bodies.size(); ++b)
     {
@@ -421,8 +423,10 @@ void fsiSolver::readStartTime()
             // another density (a wall given its material's rho, rho0
             // changed since generateParticles) would make walls push as
             // if denser, or a second fluid the equation of state undoes.
+            // Those are off by per cents; ascii masses carry the rounding
+            // of their digits.
             if (std::fabs(particles_.mass[k] - defaultMass)
-                > 1e-4*defaultMass)
+                > massTolerance*defaultMass)
             {
                 fatalError("Body " + body.name() + " of time "
                     + startTimeName_ + ": particle id "

@@ -27,43 +27,6 @@ struct discardBuffer : std::streambuf
     int overflow(const int c) override { return traits_type::not_eof(c); }
 };
 
-// The entries of functions {} to evaluate: the named ones, else the
-// enabled ones (an entry that is no dictionary too, for readAll's error).
-std::vector<std::string> entriesToEvaluate(const dictionary& dict,
-    const std::vector<std::string>& named, const fs::path& dictFile)
-{
-    const entry& functions = dict.lookupEntry("functions");
-    if (!functions.isDict()) return {"functions"};   // readAll says why
-    const dictionary& fns = functions.dict();
-    for (const std::string& name : named)
-    {
-        if (!fns.findEntry(name))
-        {
-            fatalIOError(functions.file(), functions.line(),
-                "Function object '" + name + "' is not in functions {};"
-                " its entries are " + str(fns.keys()), name);
-        }
-    }
-    if (!named.empty()) return named;
-
-    std::vector<std::string> enabled;
-    for (const std::string& name : fns.keys())
-    {
-        const entry& e = *fns.findEntry(name);
-        if (!e.isDict() || e.dict().getOrDefault<bool>("enabled", true))
-        {
-            enabled.push_back(name);
-        }
-    }
-    if (enabled.empty())
-    {
-        fatalError("functions {} of " + dictFile.string() + " has no"
-            " enabled entry to evaluate (-func NAME evaluates one with"
-            " enabled false)");
-    }
-    return enabled;
-}
-
 } // End anonymous namespace
 
 
@@ -95,7 +58,13 @@ void postProcessTimes(const fs::path& caseDir,
     // times (a solver write has uniform/time; one without it past the
     // case's first time would be read as an initial state).
     const std::vector<std::string> names =
-        entriesToEvaluate(functionsDict, settings.functions, dictFile);
+        functionObject::selectEntries(functionsDict, settings.functions);
+    if (names.empty())
+    {
+        fatalError("functions {} of " + dictFile.string() + " has no"
+            " enabled entry to evaluate (-func NAME evaluates one with"
+            " enabled false)");
+    }
     for (const std::string& name : names)
     {
         const fs::path dir = caseDir/"postProcessing"/name/times.front().name;

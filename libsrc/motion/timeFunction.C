@@ -71,10 +71,12 @@ std::vector<std::string> splitCells(const std::string& line)
 }
 
 // The whole cell as a finite number (strtod alone would accept "1.5abc",
-// "nan" and "inf").
-bool parseNumber(const std::string& cell, scalar& v)
+// "nan" and "inf"); "1,5" is 1.5.
+bool parseNumber(std::string cell, scalar& v)
 {
     if (cell.empty()) return false;
+    // A comma in a cell (rows split at semicolons) is a decimal comma.
+    std::replace(cell.begin(), cell.end(), ',', '.');
     char* end = nullptr;
     v = std::strtod(cell.c_str(), &end);
     return end == cell.c_str() + cell.size() && std::isfinite(v);

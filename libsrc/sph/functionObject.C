@@ -146,6 +146,45 @@ std::ofstream& functionObject::output(const std::string& file)
 
 // * * * * * * * * * * * * * * * * * Selector * * * * * * * * * * * * * * * //
 
+std::vector<std::string> functionObject::selectEntries(
+    const dictionary& controlDict, const std::vector<std::string>& only)
+{
+    const entry* functions = controlDict.findEntry("functions");
+    if (!functions || !functions->isDict())
+    {
+        if (!only.empty())
+        {
+            fatalError("No functions {} in " + controlDict.name()
+                + ": function object '" + only.front() + "' is not there");
+        }
+        return functions ? std::vector<std::string>{"functions"}
+                         : std::vector<std::string>{};
+    }
+    const dictionary& fns = functions->dict();
+    for (const std::string& name : only)
+    {
+        if (!fns.findEntry(name))
+        {
+            fatalIOError(functions->file(), functions->line(),
+                "Function object '" + name + "' is not in functions {};"
+                " its entries are " + str(fns.keys()), name);
+        }
+    }
+    if (!only.empty()) return only;
+
+    std::vector<std::string> enabled;
+    for (const std::string& name : fns.keys())
+    {
+        const entry& e = *fns.findEntry(name);
+        if (!e.isDict() || e.dict().getOrDefault<bool>("enabled", true))
+        {
+            enabled.push_back(name);
+        }
+    }
+    return enabled;
+}
+
+
 std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
     const dictionary& controlDict, const std::filesystem::path& caseDir,
     const std::string& startTimeName, const sphModel& model,
@@ -171,14 +210,9 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
     }
 
     const dictionary& fns = functions->dict();
-    for (const std::string& name : only)
+    if (!only.empty())
     {
-        if (!fns.findEntry(name))
-        {
-            fatalIOError(functions->file(), functions->line(),
-                "Function object '" + name + "' is not in functions {};"
-                " its entries are " + str(fns.keys()), name);
-        }
+        selectEntries(controlDict, only);   // each one there
     }
     for (const std::string& name : fns.keys())
     {

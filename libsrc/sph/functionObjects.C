@@ -216,16 +216,16 @@ table::table(std::string name, const dictionary& dict,
              const std::string& startTimeName, std::string file)
 :
     functionObject(std::move(name), dict, caseDir, startTimeName),
-    files_{std::move(file)}
+    fileNames_{std::move(file)}
 {}
 
 
 void table::sample(const solverSnapshot& s)
 {
     const std::vector<std::vector<scalar>> all = rows(s);
-    for (std::size_t f = 0; f < files_.size(); ++f)
+    for (std::size_t f = 0; f < fileNames_.size(); ++f)
     {
-        std::ofstream& os = output(files_[f]);
+        std::ofstream& os = output(fileNames_[f]);
         errno = 0;
         if (!headerWritten_)
         {
@@ -242,7 +242,7 @@ void table::sample(const solverSnapshot& s)
         {
             // The stream keeps no reason; errno has the failed write's.
             fatalError("Function object '" + name() + "': cannot write "
-                + outputPath(files_[f]).string() + ": "
+                + outputPath(fileNames_[f]).string() + ": "
                 + (errno ? std::strerror(errno) : "the stream failed"));
         }
     }
@@ -349,10 +349,12 @@ std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
             scalar walls = 0;
             if (wetFraction_ > 0)
             {
+                // A wall particle's volume dp^d (its mass is rho0 dp^d; its
+                // rho follows the extrapolated pressure).
                 forEachNear(s, kernel, x, false,
                     [&](const label j, const scalar r)
                     {
-                        walls += kernel.W(r)*pf.mass[j]/pf.rho[j];
+                        walls += kernel.W(r)*pf.mass[j]/s.model.rho0;
                     });
             }
             if (sumW > 0
@@ -623,6 +625,7 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
             [&](const label w)
             {
                 const sumVec f = toSum(onWall(w));
+                if (!moment_) return forceMoment{f, {0, 0, 0}};
                 const sumVec arm = toSum(toVec3(pf.position[w]) - CofR_);
                 return forceMoment{f, cross(arm, f)};
             },
@@ -645,7 +648,7 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
 
 void forces::writeHeader(std::ostream& os) const
 {
-    os << "# Time Fx Fy Fz\n";
+    writeFileHeader(os, 0);
 }
 
 
@@ -653,7 +656,7 @@ void forces::writeFileHeader(std::ostream& os, const std::size_t file) const
 {
     if (file == 0)
     {
-        writeHeader(os);
+        os << "# Time Fx Fy Fz\n";
         return;
     }
     os << "# Moment about CofR " << str(CofR_, 10) << "\n"

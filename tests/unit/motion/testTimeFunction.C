@@ -379,7 +379,8 @@ TEST(timeFunction, tableColumnsByNumber)
     dir.write("constant/pistonNoHeader.csv", "0;0\n0.5;0.1\n1;0.3;\n");
     EXPECT_THROW(readFunction(dir, "type table;\nfile"
         " \"constant/pistonNoHeader.csv\";\n", false), FatalError);
-    dir.write("constant/pistonNoHeader.csv", "0;0\n0.5;0.1\n1;0.3\n");
+    // ... and a spreadsheet's with decimal commas.
+    dir.write("constant/pistonNoHeader.csv", "0;0\n0,5;0,1\n1;0,3\n");
     EXPECT_DOUBLE_EQ(readFunction(dir, "type table;\nfile"
         " \"constant/pistonNoHeader.csv\";\n", false).value(0.25), 0.05);
 
