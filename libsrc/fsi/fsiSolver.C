@@ -1108,7 +1108,7 @@ void fsiSolver::refreshWalls()
     else
     {
         hostParticleStore store = hostStore();
-        updateWallsOn(store);
+        updateWallsOn(store, false);
     }
     wallsFreshIndex_ = timeIndex_;
 }

@@ -332,7 +332,7 @@ void fsiSolver::gpuToHost()
 
 void fsiSolver::updateWallsGpu()
 {
-    updateWallsOn(*gpu_);
+    updateWallsOn(*gpu_, false);
 }
 
 
