@@ -12,6 +12,7 @@
 #include "formatting.H"
 
 #include <algorithm>
+#include <map>
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
@@ -667,7 +668,7 @@ std::size_t dictionary::size() const
 void dictionary::checkKeywords(const std::vector<std::string>& valid) const
 {
     // Entries of #include'd files this dictionary does not read, by file.
-    std::vector<std::pair<std::string, std::vector<std::string>>> unread;
+    std::map<std::string, std::vector<std::string>> unread;
     for (const auto& e : entries_)
     {
         if
@@ -685,14 +686,7 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
         // of a keyword of this one: a warning names them.
         if (guess.empty() && !e.file().empty() && e.file() != file_)
         {
-            auto it = std::find_if(unread.begin(), unread.end(),
-                [&](const auto& u) { return u.first == e.file(); });
-            if (it == unread.end())
-            {
-                unread.push_back({e.file(), {}});
-                it = unread.end() - 1;
-            }
-            it->second.push_back(e.keyword());
+            unread[e.file()].push_back(e.keyword());
             continue;
         }
         fatalIOError(e.file(), e.line(), "Unknown keyword '" + e.keyword()

@@ -432,7 +432,8 @@ void fsiSolver::readStartTime()
                     + startTimeName_ + ": particle id "
                     + std::to_string(ids[i]) + " has mass "
                     + str(particles_.mass[k]) + ", a density of "
-                    + str(particles_.mass[k]/std::pow(dp, nDim)) + " kg/m^3"
+                    + str(particles_.mass[k]/defaultMass*model_.rho0)
+                    + " kg/m^3"
                     " over dp^" + std::to_string(nDim) + ", but rho0 of"
                     " constant/fluidProperties is " + str(model_.rho0)
                     + ": fluid and wall particles all carry the fluid's"

@@ -4,7 +4,6 @@
 #include "postProcessTimes.H"
 #include "dictionary.H"
 #include "error.H"
-#include "formatting.H"
 #include "fsiSolver.H"
 #include "functionObject.H"
 #include "solidOnlySolver.H"

@@ -150,15 +150,20 @@ std::vector<std::string> functionObject::selectEntries(
     const dictionary& controlDict, const std::vector<std::string>& only)
 {
     const entry* functions = controlDict.findEntry("functions");
-    if (!functions || !functions->isDict())
+    if (!functions)
     {
         if (!only.empty())
         {
             fatalError("No functions {} in " + controlDict.name()
                 + ": function object '" + only.front() + "' is not there");
         }
-        return functions ? std::vector<std::string>{"functions"}
-                         : std::vector<std::string>{};
+        return {};
+    }
+    if (!functions->isDict())
+    {
+        fatalIOError(functions->file(), functions->line(),
+            "'functions' must be a dictionary of function objects:"
+            " functions { <name> { type <type>; ... } }", "functions");
     }
     const dictionary& fns = functions->dict();
     for (const std::string& name : only)
@@ -170,50 +175,10 @@ std::vector<std::string> functionObject::selectEntries(
                 " its entries are " + str(fns.keys()), name);
         }
     }
-    if (!only.empty()) return only;
 
-    std::vector<std::string> enabled;
-    for (const std::string& name : fns.keys())
-    {
-        const entry& e = *fns.findEntry(name);
-        if (!e.isDict() || e.dict().getOrDefault<bool>("enabled", true))
-        {
-            enabled.push_back(name);
-        }
-    }
-    return enabled;
-}
-
-
-std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
-    const dictionary& controlDict, const std::filesystem::path& caseDir,
-    const std::string& startTimeName, const sphModel& model,
-    const std::vector<bodyInfo>& bodies, const bool hasFluid,
-    const std::vector<std::string>& only)
-{
-    std::vector<std::unique_ptr<functionObject>> all;
-    const entry* functions = controlDict.findEntry("functions");
-    if (!functions && !only.empty())
-    {
-        fatalError("No functions {} in " + controlDict.name() + ": function"
-            " object '" + only.front() + "' is not there");
-    }
-    if (!functions)
-    {
-        return all;
-    }
-    if (!functions->isDict())
-    {
-        fatalIOError(functions->file(), functions->line(),
-            "'functions' must be a dictionary of function objects:"
-            " functions { <name> { type <type>; ... } }", "functions");
-    }
-
-    const dictionary& fns = functions->dict();
-    if (!only.empty())
-    {
-        selectEntries(controlDict, only);   // each one there
-    }
+    // In the order of functions {}; each entry looked at is a directory
+    // name under postProcessing and a sub-dictionary.
+    std::vector<std::string> selected;
     for (const std::string& name : fns.keys())
     {
         const bool named =
@@ -239,12 +204,26 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
             fatalIOError(e.file(), e.line(), "Function object name '" + name
                 + "' cannot be a directory name under postProcessing", name);
         }
-
-        const dictionary& dict = e.dict();
-        if (!dict.getOrDefault<bool>("enabled", true) && !named)
+        if (named || e.dict().getOrDefault<bool>("enabled", true))
         {
-            continue;
+            selected.push_back(name);
         }
+    }
+    return selected;
+}
+
+
+std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
+    const dictionary& controlDict, const std::filesystem::path& caseDir,
+    const std::string& startTimeName, const sphModel& model,
+    const std::vector<bodyInfo>& bodies, const bool hasFluid,
+    const std::vector<std::string>& only)
+{
+    std::vector<std::unique_ptr<functionObject>> all;
+    for (const std::string& name : selectEntries(controlDict, only))
+    {
+        const dictionary& dict =
+            controlDict.subDict("functions").subDict(name);
         const std::string type = dict.get<std::string>("type");
         if
         (
