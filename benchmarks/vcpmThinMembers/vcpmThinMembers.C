@@ -33,7 +33,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -208,39 +207,90 @@ int main(int argc, char* argv[])
         {0.3, planeModel::planeStrain}, {0.3975, planeModel::planeStrain}
     };
     bool caseGiven = false;
+    // A benchmark of the lattice, not of a case: no -case, no banner; bad
+    // arguments are named, never taken for something else.
+    const char* usage =
+        "usage: vcpmThinMembers [-relax] [-layers \"2 4 8\"]"
+        " [-nu NU [-plane stress|strain]]... [-surface on|off|both]\n"
+        "Bending stiffness of the VCPM lattice against the number of layers"
+        " (docs/vcpm.md, \"Thin members\").\n";
+    auto bad = [&](const std::string& what)
+    {
+        std::fprintf(stderr, "vcpmThinMembers: %s\n%s", what.c_str(), usage);
+        std::exit(1);
+    };
     for (int i = 1; i < argc; ++i)
     {
         const std::string a = argv[i];
-        if (a == "-relax") dynamic = true;
-        else if (a == "-surface" && i + 1 < argc)
+        const bool hasValue = i + 1 < argc;
+        if (a == "-help" || a == "--help" || a == "-h")
+        {
+            std::printf("%s", usage);
+            return 0;
+        }
+        else if (a == "-relax") dynamic = true;
+        else if (a == "-surface" && hasValue)
         {
             const std::string v = argv[++i];
+            if (v != "on" && v != "off" && v != "both")
+            {
+                bad("-surface " + v + ": expected on, off or both");
+            }
             surfaces = v == "both" ? std::vector<bool>{false, true}
                                    : std::vector<bool>{v == "on"};
         }
-        else if (a == "-layers" && i + 1 < argc)
+        else if (a == "-layers" && hasValue)
         {
             layers.clear();
             std::istringstream is(argv[++i]);
-            for (int n; is >> n;) layers.push_back(n);
+            std::string word;
+            while (is >> word)
+            {
+                char* end = nullptr;
+                const long n = std::strtol(word.c_str(), &end, 10);
+                if (*end != '\0' || n < 2 || n > 1000)
+                {
+                    bad("-layers: '" + word + "' is not a number of layers"
+                        " from 2 to 1000");
+                }
+                layers.push_back(int(n));
+            }
+            if (layers.empty())
+            {
+                bad("-layers: no number of layers given");
+            }
         }
-        else if (a == "-nu" && i + 1 < argc)
+        else if (a == "-nu" && hasValue)
         {
             if (!caseGiven) cases.clear();
             caseGiven = true;
-            cases.push_back({std::atof(argv[++i]), planeModel::planeStress});
+            char* end = nullptr;
+            const double nu = std::strtod(argv[++i], &end);
+            if (*end != '\0' || !(nu > -1 && nu < 0.5))
+            {
+                bad(std::string("-nu ") + argv[i] + ": expected a Poisson"
+                    " ratio in (-1, 0.5)");
+            }
+            cases.push_back({scalar(nu), planeModel::planeStress});
         }
-        else if (a == "-plane" && i + 1 < argc && caseGiven)
+        else if (a == "-plane" && hasValue)
         {
-            cases.back().second = vcpmMaterial::planeNamed(
-                std::string("plane") + (std::strcmp(argv[++i], "strain")
-                ? "Stress" : "Strain"));
+            const std::string v = argv[++i];
+            if (!caseGiven)
+            {
+                bad("-plane " + v + " before any -nu: it sets the plane"
+                    " model of the -nu before it");
+            }
+            if (v != "stress" && v != "strain")
+            {
+                bad("-plane " + v + ": expected stress or strain");
+            }
+            cases.back().second = v == "strain" ? planeModel::planeStrain
+                                                : planeModel::planeStress;
         }
         else
         {
-            std::fprintf(stderr, "usage: %s [-relax] [-layers \"2 4 8\"] "
-                "[-nu NU [-plane stress|strain]]...\n", argv[0]);
-            return 1;
+            bad("unknown option or missing value: '" + a + "'");
         }
     }
     std::printf("Cantilever L = %g m, H = %g m, E = %g Pa, rho = %g, g = %g, "

@@ -33,6 +33,7 @@ def parseArgs():
     p.add_argument("--view", choices=("front", "top", "iso"))
     p.add_argument("--cut", choices=("x", "y", "z"))
     p.add_argument("--animate", type=int, default=0)
+    p.add_argument("--surface", action="store_true")
     p.add_argument("--velocityRange", type=float, nargs=2)
     p.add_argument("--stressRange", type=float, nargs=2)
     p.add_argument("--size", default="1600x900")
@@ -398,6 +399,18 @@ def main():
     seriesFiles = sorted(glob.glob(os.path.join(case, "VTK", "*.vtp.series")))
     if not seriesFiles:
         fail("no VTK/*.vtp.series in %s: run particlesToVTK first" % case)
+    # The free surface of particlesToVTK -freeSurface is not a body (a
+    # body of that name has a bodyProperties; particlesToVTK refuses the
+    # surface then).
+    surfaceSeries = os.path.join(case, "VTK", "freeSurface.vtp.series")
+    hasSurface = surfaceSeries in seriesFiles and not any(
+        os.path.isfile(os.path.join(case, t, "freeSurface", "bodyProperties"))
+        for t in timeDirs(case))
+    if hasSurface:
+        seriesFiles.remove(surfaceSeries)
+    if args.surface and not hasSurface:
+        fail("-surface: no VTK/freeSurface.vtp.series in %s: run "
+             "particlesToVTK -freeSurface first" % case)
     bodies = [Body(case, s) for s in seriesFiles]
     allTimes = sorted({t for b in bodies for t in b.times})
     fmt = timeFormat(allTimes)
@@ -478,6 +491,8 @@ def main():
     bars = ([(luts["U"], "\u2223U\u2223 [m/s]", uRange)] if fluids else []) + \
         ([(luts["vonMises"], "von Mises [Pa]", sRange)] if solids else [])
     for b in bodies:
+        if args.surface and b.type == "fluid" and not planar:
+            continue        # the surface stands for it
         source = b.reader
         if b.type == "wall" and not planar:
             source = withoutNearFaces(b, toCamera)
@@ -500,6 +515,21 @@ def main():
             pv.ColorBy(d, ("POINTS", "U", "Magnitude"))
         elif b in solids:
             pv.ColorBy(d, ("POINTS", "vonMises"))
+        else:
+            d.ColorArrayName = ["POINTS", ""]
+    if args.surface:
+        # The water's surface coloured as its particles would be; in 2D its
+        # outline over the particles.
+        source = pv.OpenDataFile(surfaceSeries)
+        if cut:
+            source = beyondPlane(source, *cut, toCamera)
+        d = pv.Show(source, pic.view)
+        d.SetRepresentationType("Surface")
+        d.LineWidth = 3
+        d.AmbientColor = d.DiffuseColor = [0.1, 0.2, 0.5] if planar else \
+            luts["U"].RGBPoints[1:4]
+        if fluids and not planar:
+            pv.ColorBy(d, ("POINTS", "U", "Magnitude"))
         else:
             d.ColorArrayName = ["POINTS", ""]
     for slot, (lut, title, valueRange) in enumerate(bars):

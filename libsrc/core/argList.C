@@ -3,6 +3,8 @@
 #include "foamFile.H"
 #include "version.H"
 
+#include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -265,6 +267,44 @@ std::vector<std::string> argList::wordListOption(const std::string& name)
     const
 {
     return parseWordList(option(name), "-" + name);
+}
+
+
+double argList::numberOption(const std::string& name, const double deflt)
+    const
+{
+    if (!found(name))
+    {
+        return deflt;
+    }
+    const std::string text = option(name);
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);
+    while (end && *end != '\0'
+        && std::isspace(static_cast<unsigned char>(*end)))
+    {
+        ++end;
+    }
+    if (text.empty() || end == text.c_str() || *end != '\0' || errno != 0
+     || !std::isfinite(value))
+    {
+        fatalError("Option -" + name + " expects a number, not '" + text
+            + "'");
+    }
+    return value;
+}
+
+
+long argList::integerOption(const std::string& name, const long deflt) const
+{
+    const double value = numberOption(name, double(deflt));
+    if (value != std::floor(value) || std::fabs(value) > 1e15)
+    {
+        fatalError("Option -" + name + " expects a whole number, not '"
+            + option(name) + "'");
+    }
+    return long(value);
 }
 
 } // End namespace sphvcpm

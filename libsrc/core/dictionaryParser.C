@@ -316,7 +316,8 @@ void dictionaryParser::add(dictionary& dict, entry&& e, inputMode mode)
 const entry* dictionaryParser::findScoped(const dictionary& dict,
                                           const std::string& name,
                                           bool patterns,
-                                          const dictionary** searched)
+                                          const dictionary** searched,
+                                          std::vector<const entry*>* through)
 {
     const dictionary* cur = &dict;
     bool recursive = true;
@@ -379,6 +380,10 @@ const entry* dictionaryParser::findScoped(const dictionary& dict,
                         *searched = cur;
                     }
                     return nullptr;
+                }
+                if (through)
+                {
+                    through->push_back(e);
                 }
                 cur = &e->dict();
             }
@@ -1021,12 +1026,18 @@ dictionaryParser::resolved dictionaryParser::resolve
 
     resolved r;
     const dictionary* searched = &dict;
-    r.ent = findScoped(dict, name, patterns, &searched);
+    std::vector<const entry*> through;
+    r.ent = findScoped(dict, name, patterns, &searched, &through);
     if (r.ent)
     {
-        // A variable of the case, not a misspelt keyword (checkKeywords).
-        // The entry belongs to the dictionary being read.
+        // A variable of the case, not a misspelt keyword (checkKeywords),
+        // and so is a sub-dictionary of parameters it is read from
+        // ($sub/x). The entries belong to the dictionary being read.
         const_cast<entry*>(r.ent)->markUsedAsVariable();
+        for (const entry* e : through)
+        {
+            const_cast<entry*>(e)->markUsedAsVariable();
+        }
         return r;
     }
 

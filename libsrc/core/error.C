@@ -69,8 +69,19 @@ void fatalIOError(const std::string& file, int line,
 namespace
 {
 std::atomic<bool> warnOnce{false};
+std::atomic<int> quietDepth{0};
 std::mutex warnedMutex;
 std::set<std::string> warned;
+}
+
+quietWarnings::quietWarnings()
+{
+    ++quietDepth;
+}
+
+quietWarnings::~quietWarnings()
+{
+    --quietDepth;
 }
 
 void warnOnlyOnce(const bool once)
@@ -82,6 +93,10 @@ void warnOnlyOnce(const bool once)
 
 void warning(const std::string& message, const std::string& file, int line)
 {
+    if (quietDepth > 0)
+    {
+        return;
+    }
     if (warnOnce)
     {
         const std::lock_guard<std::mutex> lock(warnedMutex);
@@ -91,6 +106,8 @@ void warning(const std::string& message, const std::string& file, int line)
             return;
         }
     }
+    // What was logged before comes first in a log of both streams.
+    std::cout.flush();
     std::cerr << "\n--> SPHVCPM Warning :\n" << message << "\n";
     if (!file.empty())
     {

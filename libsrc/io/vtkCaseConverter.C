@@ -117,7 +117,7 @@ std::filesystem::path vtkCaseConverter::vtpName(const std::string& body,
 
 
 std::vector<vtkCaseConverter::bodyOutput> vtkCaseConverter::convert(
-    const timeInstant& time)
+    const timeInstant& time, std::vector<particleBody>* bodies)
 {
     const auto state = states_.find(time.name);
     if (state == states_.end())
@@ -127,7 +127,8 @@ std::vector<vtkCaseConverter::bodyOutput> vtkCaseConverter::convert(
     }
 
     std::vector<bodyOutput> outputs;
-    for (const particleBody& body : readTimeDirectory(caseDir_, time.name))
+    std::vector<particleBody> read = readTimeDirectory(caseDir_, time.name);
+    for (const particleBody& body : read)
     {
         const std::filesystem::path name =
             vtpName(body.name(), state->second.index);
@@ -137,13 +138,44 @@ std::vector<vtkCaseConverter::bodyOutput> vtkCaseConverter::convert(
                  state->second.value);
 
         outputs.push_back({body.name(), body.size(), "VTK"/name});
-        if (!std::binary_search(bodies_.begin(), bodies_.end(), body.name()))
-        {
-            bodies_.insert(std::upper_bound(bodies_.begin(), bodies_.end(),
-                body.name()), body.name());
-        }
+        addToSeries(body.name());
+        bodyNames_[time.name].push_back(body.name());
+    }
+    if (bodies)
+    {
+        *bodies = std::move(read);
     }
     return outputs;
+}
+
+
+std::filesystem::path vtkCaseConverter::writeMesh(const std::string& name,
+    const timeInstant& time, const vtpMesh& mesh)
+{
+    const auto& names = bodyNames_[time.name];
+    if (std::find(names.begin(), names.end(), name) != names.end())
+    {
+        fatalError("Time " + time.name + " of case " + caseDir_.string()
+            + " has a body named '" + name + "': its VTK files and those of"
+              " the " + name + " would be the same.\nRename the body in"
+              " system/generateParticlesDict.");
+    }
+    const std::filesystem::path file =
+        vtpName(name, states_.at(time.name).index);
+    std::filesystem::create_directories(vtkDir()/name);
+    writeVtpMesh(vtkDir()/file, mesh, states_.at(time.name).value);
+    addToSeries(name);
+    return "VTK"/file;
+}
+
+
+void vtkCaseConverter::addToSeries(const std::string& name)
+{
+    if (!std::binary_search(bodies_.begin(), bodies_.end(), name))
+    {
+        bodies_.insert(std::upper_bound(bodies_.begin(), bodies_.end(),
+            name), name);
+    }
 }
 
 

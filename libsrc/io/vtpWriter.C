@@ -140,6 +140,134 @@ void writeDataArrayTag(std::ostream& os, const dataArray& a,
        << "\" format=\"appended\" offset=\"" << a.offset << "\"/>\n";
 }
 
+// Writes n values first, first + step, ... as Int64, in chunks (the
+// vertex cells' connectivity and every kind of cell's offsets).
+std::function<void(std::ostream&)> sequence(const std::uint64_t n,
+                                            const std::int64_t first,
+                                            const std::int64_t step)
+{
+    return [n, first, step](std::ostream& os)
+    {
+        std::vector<std::int64_t> buf;
+        buf.reserve(std::min<std::uint64_t>(n, chunkSize));
+        for (std::uint64_t start = 0; start < n; start += chunkSize)
+        {
+            const std::uint64_t end = std::min<std::uint64_t>(n,
+                start + chunkSize);
+            buf.clear();
+            for (std::uint64_t i = start; i < end; ++i)
+            {
+                buf.push_back(first + step*std::int64_t(i));
+            }
+            writeRaw(os, buf.data(), buf.size()*sizeof(std::int64_t));
+        }
+    };
+}
+
+// The cells of a piece: Verts, Lines or Polys, their number, and their
+// connectivity and offsets arrays.
+struct cellSection
+{
+    const char* name;
+    std::uint64_t nCells;
+    dataArray connectivity;
+    dataArray offsets;
+};
+
+// The file: header, then the appended blocks in the order it lists them.
+void writePolyData(const std::filesystem::path& file,
+                   const std::uint64_t nPoints,
+                   std::vector<dataArray> pointData, dataArray points,
+                   cellSection cells, const double time,
+                   const std::string& normals = "")
+{
+    std::vector<double> timeValue;
+    if (!std::isnan(time))
+    {
+        timeValue.push_back(time);
+    }
+    dataArray timeArray = directArray("TimeValue", "Float64", 1, timeValue);
+
+    std::vector<dataArray*> blocks;
+    if (!timeValue.empty())
+    {
+        blocks.push_back(&timeArray);
+    }
+    for (auto& a : pointData)
+    {
+        blocks.push_back(&a);
+    }
+    blocks.push_back(&points);
+    blocks.push_back(&cells.connectivity);
+    blocks.push_back(&cells.offsets);
+    std::uint64_t offset = 0;
+    for (auto* b : blocks)
+    {
+        b->offset = offset;
+        offset += sizeof(std::uint64_t) + b->nBytes;
+    }
+
+    const std::string section = cells.name;
+    auto count = [&](const char* name)
+    {
+        return std::to_string(section == name ? cells.nCells : 0);
+    };
+    std::ostringstream header;
+    header
+        << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"PolyData\" version=\"1.0\""
+           " byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+        << "  <PolyData>\n";
+    if (!timeValue.empty())
+    {
+        header
+            << "    <FieldData>\n"
+            << "      <DataArray type=\"Float64\" Name=\"TimeValue\""
+               " NumberOfTuples=\"1\" format=\"appended\" offset=\""
+            << timeArray.offset << "\"/>\n"
+            << "    </FieldData>\n";
+    }
+    header
+        << "    <Piece NumberOfPoints=\"" << nPoints
+        << "\" NumberOfVerts=\"" << count("Verts")
+        << "\" NumberOfLines=\"" << count("Lines")
+        << "\" NumberOfStrips=\"0\" NumberOfPolys=\"" << count("Polys")
+        << "\">\n"
+        << "      <PointData"
+        << (normals.empty() ? "" : " Normals=\"" + xmlEscape(normals) + "\"")
+        << ">\n";
+    for (const auto& a : pointData)
+    {
+        writeDataArrayTag(header, a, "        ");
+    }
+    header
+        << "      </PointData>\n"
+        << "      <Points>\n";
+    writeDataArrayTag(header, points, "        ");
+    header
+        << "      </Points>\n"
+        << "      <" << section << ">\n";
+    writeDataArrayTag(header, cells.connectivity, "        ");
+    writeDataArrayTag(header, cells.offsets, "        ");
+    header
+        << "      </" << section << ">\n"
+        << "    </Piece>\n"
+        << "  </PolyData>\n"
+        << "  <AppendedData encoding=\"raw\">\n"
+        << "   _";
+
+    writeAtomic(file, [&](std::ostream& os)
+    {
+        os << header.str();
+        for (const auto* b : blocks)
+        {
+            writeRaw(os, &b->nBytes, sizeof(std::uint64_t));
+            b->writeValues(os);
+        }
+        os << "\n  </AppendedData>\n</VTKFile>\n";
+    });
+}
+
 } // End anonymous namespace
 
 
@@ -263,107 +391,47 @@ void writeVtp(const std::filesystem::path& file, const particleBody& body,
 
     // One vertex cell per particle: connectivity i, offsets i + 1 (the end
     // of each cell in connectivity).
-    auto sequence = [n](std::int64_t first)
-    {
-        return [n, first](std::ostream& os)
-        {
-            std::vector<std::int64_t> buf;
-            buf.reserve(std::min<std::uint64_t>(n, chunkSize));
-            for (std::uint64_t start = 0; start < n; start += chunkSize)
-            {
-                const std::uint64_t end = std::min<std::uint64_t>(n,
-                    start + chunkSize);
-                buf.clear();
-                for (std::uint64_t i = start; i < end; ++i)
-                {
-                    buf.push_back(std::int64_t(i) + first);
-                }
-                writeRaw(os, buf.data(), buf.size()*sizeof(std::int64_t));
-            }
-        };
-    };
     dataArray connectivity{"connectivity", "Int64", 1,
-        n*sizeof(std::int64_t), sequence(0)};
+        n*sizeof(std::int64_t), sequence(n, 0, 1)};
     dataArray offsets{"offsets", "Int64", 1, n*sizeof(std::int64_t),
-        sequence(1)};
+        sequence(n, 1, 1)};
+    writePolyData(file, n, pointData, points, {"Verts", n, connectivity,
+        offsets}, time);
+}
 
-    std::vector<double> timeValue;
-    if (!std::isnan(time))
-    {
-        timeValue.push_back(time);
-    }
-    dataArray timeArray = directArray("TimeValue", "Float64", 1, timeValue);
 
-    // Appended blocks in the order the header lists them.
-    std::vector<dataArray*> blocks;
-    if (!timeValue.empty())
+void writeVtpMesh(const std::filesystem::path& file, const vtpMesh& mesh,
+                  const double time)
+{
+    if (mesh.nodesPerCell < 1 || mesh.nodesPerCell > 3
+     || mesh.connectivity.size() % mesh.nodesPerCell != 0)
     {
-        blocks.push_back(&timeArray);
+        fatalError("writeVtpMesh: " + std::to_string(
+            mesh.connectivity.size()) + " connectivity entries for cells of "
+            + std::to_string(mesh.nodesPerCell) + " points (" + file.string()
+            + ")");
     }
-    for (auto& a : pointData)
+    const std::uint64_t n = mesh.points.size();
+    std::vector<dataArray> pointData;
+    for (const auto& [name, values] : mesh.scalarFields)
     {
-        blocks.push_back(&a);
+        pointData.push_back(directArray(name, scalarType, 1, values));
     }
-    blocks.push_back(&points);
-    blocks.push_back(&connectivity);
-    blocks.push_back(&offsets);
-    std::uint64_t offset = 0;
-    for (auto* b : blocks)
+    for (const auto& [name, values] : mesh.vectorFields)
     {
-        b->offset = offset;
-        offset += sizeof(std::uint64_t) + b->nBytes;
+        pointData.push_back(directArray(name, scalarType, 3, values));
     }
-
-    std::ostringstream header;
-    header
-        << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"PolyData\" version=\"1.0\""
-           " byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-        << "  <PolyData>\n";
-    if (!timeValue.empty())
-    {
-        header
-            << "    <FieldData>\n"
-            << "      <DataArray type=\"Float64\" Name=\"TimeValue\""
-               " NumberOfTuples=\"1\" format=\"appended\" offset=\""
-            << timeArray.offset << "\"/>\n"
-            << "    </FieldData>\n";
-    }
-    header
-        << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
-        << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\""
-           " NumberOfPolys=\"0\">\n"
-        << "      <PointData>\n";
-    for (const auto& a : pointData)
-    {
-        writeDataArrayTag(header, a, "        ");
-    }
-    header
-        << "      </PointData>\n"
-        << "      <Points>\n";
-    writeDataArrayTag(header, points, "        ");
-    header
-        << "      </Points>\n"
-        << "      <Verts>\n";
-    writeDataArrayTag(header, connectivity, "        ");
-    writeDataArrayTag(header, offsets, "        ");
-    header
-        << "      </Verts>\n"
-        << "    </Piece>\n"
-        << "  </PolyData>\n"
-        << "  <AppendedData encoding=\"raw\">\n"
-        << "   _";
-
-    writeAtomic(file, [&](std::ostream& os)
-    {
-        os << header.str();
-        for (const auto* b : blocks)
-        {
-            writeRaw(os, &b->nBytes, sizeof(std::uint64_t));
-            b->writeValues(os);
-        }
-        os << "\n  </AppendedData>\n</VTKFile>\n";
-    });
+    const dataArray points = directArray("Points", "Float64", 3, mesh.points);
+    const std::uint64_t nCells = mesh.nCells();
+    const dataArray connectivity = directArray("connectivity", "Int64", 1,
+        mesh.connectivity);
+    const dataArray offsets{"offsets", "Int64", 1,
+        nCells*sizeof(std::int64_t),
+        sequence(nCells, mesh.nodesPerCell, mesh.nodesPerCell)};
+    const char* section = mesh.nodesPerCell == 1 ? "Verts"
+        : mesh.nodesPerCell == 2 ? "Lines" : "Polys";
+    writePolyData(file, n, pointData, points, {section, nCells,
+        connectivity, offsets}, time, mesh.normals);
 }
 
 

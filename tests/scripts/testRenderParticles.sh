@@ -5,7 +5,8 @@
 # directories removed (body types then told by the fields, dp estimated;
 # iso view, -output). The PNGs must have the asked size and show the
 # particles: colours of the fluid's and the walls' maps, not only white.
-# Also the errors (no VTK/, bad options) and the exit 0 without pvbatch.
+# Also the errors (no VTK/, bad options) and the exit 0 without pvbatch;
+# -cut and -surface on the 3D hydrostatic tank.
 # Without ParaView, or where it cannot render, skipped (exit 77) after the
 # checks that need no ParaView.
 . "$(dirname "$0")/testLib.sh"
@@ -169,5 +170,22 @@ expectIn "-cut x in the front view: says why" "$scratch/log.cutAcross" \
     "-cut x: the x axis lies across the front view"
 "$render" -cut w > "$scratch/log.cutBad" 2>&1
 check "-cut w: exit 1" [ $? -eq 1 ]
+
+# -surface: the tank's water as its free surface (particlesToVTK
+# -freeSurface); without the surface written, an error that says how.
+(cd "$tank" && "$render" -surface > "$scratch/log.noSurface" 2>&1)
+check "-surface before -freeSurface: exit 1" [ $? -eq 1 ]
+expectIn "-surface before -freeSurface: says how" "$scratch/log.noSurface" \
+    "run particlesToVTK -freeSurface first"
+(cd "$tank" && particlesToVTK -freeSurface > log.surface 2>&1)
+(cd "$tank" && "$render" -size 400x300 -output plain > "$scratch/log.plain" 2>&1)
+check "the surface's series is no body: the same picture without -surface" \
+    cmp -s "$tank/whole/tank3D_t0.png" "$tank/plain/tank3D_t0.png"
+(cd "$tank" && "$render" -size 400x300 -output surface -surface \
+    > "$scratch/log.surface" 2>&1)
+check "-surface: exit 0" [ $? -eq 0 ]
+checkPng "3D surface" "$tank/surface/tank3D_t0.png" 400 300
+check "-surface: the picture differs from the particles'" differ \
+    "$tank/whole/tank3D_t0.png" "$tank/surface/tank3D_t0.png"
 
 finish

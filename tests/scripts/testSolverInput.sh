@@ -170,6 +170,17 @@ fresh; sed -i 's/^coefSound .*/coefSound 7;/' "$scratch/c/constant/fluidProperti
 check "a low speed of sound only warns: the run ends" grep -q '^End' "$scratch/c/log.solver"
 expectIn "a low speed of sound: warning" "$scratch/c/log.solver" "Warning"
 
+# A warning of controlDict is given once, after the banner (the solver's
+# first look at controlDict, for the device, is quiet).
+fresh; sed -i 's/^endTime .*/&\nwriteCompression on;/' "$scratch/c/system/controlDict"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+check "writeCompression on: the run ends" grep -q '^End' "$scratch/c/log.solver"
+check "writeCompression on: one warning (got $(grep -c 'writeCompression' "$scratch/c/log.solver"))" \
+    [ "$(grep -c 'writeCompression' "$scratch/c/log.solver")" = 1 ]
+check "writeCompression on: the warning after the banner" \
+    awk '/^Exec   :/ { banner = NR } /writeCompression/ { w = NR }
+         END { exit !(banner && w > banner) }' "$scratch/c/log.solver"
+
 # speedSystem: c0 = coefSound speedSystem, and the check of c0 expects that
 # speed (the free fall over the column's height, 0.2 m, would be 2 m/s).
 fresh; sed -i 's/^coefSound .*/coefSound 10; speedSystem [0 1 -1 0 0 0 0] 0.5;/' \

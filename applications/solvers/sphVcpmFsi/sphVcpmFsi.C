@@ -116,7 +116,13 @@ int main(int argc, char* argv[])
                     " -postProcess, which was not given");
             }
         }
-        const timeControl control = timeControl::read(args.casePath());
+        // The solver reads controlDict again and gives its warnings, after
+        // the banner.
+        const timeControl control = [&]
+        {
+            const quietWarnings quiet;
+            return timeControl::read(args.casePath());
+        }();
         // -device, else $SPHVCPM_DEVICE (so that a tutorial's Allrun runs
         // on the GPU unchanged: SPHVCPM_DEVICE=cuda ./Allrun), else
         // controlDict's device: empty here, so that the solver's errors

@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 // The command line: FOAM_CASE and FOAM_CASENAME set from the case, as
 // OpenFOAM's argList does, so that dictionaries can include through them;
-// word-list options; warnings given once when asked.
+// word-list and number options; warnings given once when asked.
 
 #include "argList.H"
 #include "dictionary.H"
@@ -132,6 +132,50 @@ TEST(argList, parseWordList)
         });
         expectMessage(err,
             {"Invalid -fields '" + bad + "'", "(name1 name2)"});
+    }
+}
+
+
+TEST(argList, numberOptions)
+{
+    const scratchDir scratch("numberOptions");
+    auto make = [](argList& args)
+    {
+        args.addOption("level", "value", "a number");
+        args.addOption("refine", "n", "a whole number");
+    };
+    {
+        argList args("testApp", "numbers");
+        make(args);
+        ASSERT_TRUE(parse(args, {"-case", scratch.path().string(),
+                                 "-level", "2.5e-1", "-refine", "3"}));
+        EXPECT_EQ(args.numberOption("level", 9), 0.25);
+        EXPECT_EQ(args.integerOption("refine", 9), 3);
+    }
+    {
+        argList args("testApp", "defaults");
+        make(args);
+        ASSERT_TRUE(parse(args, {"-case", scratch.path().string()}));
+        EXPECT_EQ(args.numberOption("level", 0.5), 0.5);
+        EXPECT_EQ(args.integerOption("refine", 2), 2);
+    }
+    for (const char* bad : {"x", "1.5x", "nan", "inf", "1e999", ""})
+    {
+        argList args("testApp", "bad");
+        make(args);
+        ASSERT_TRUE(parse(args, {"-case", scratch.path().string(),
+                                 "-level", bad}));
+        expectMessage(catchFatal([&] { args.numberOption("level", 0); }),
+                      {"Option -level expects a number, not '"
+                       + std::string(bad) + "'"});
+    }
+    {
+        argList args("testApp", "not whole");
+        make(args);
+        ASSERT_TRUE(parse(args, {"-case", scratch.path().string(),
+                                 "-refine", "1.5"}));
+        expectMessage(catchFatal([&] { args.integerOption("refine", 0); }),
+                      {"Option -refine expects a whole number, not '1.5'"});
     }
 }
 

@@ -780,6 +780,17 @@ TEST(dictionaryLookup, checkKeywordsAcceptsVariables)
     EXPECT_NO_THROW(copy.subDict("bodies").subDict("water")
         .checkKeywords({"type", "radius"}));
 
+    // Parameters kept in a sub-dictionary, read as $sub/x, ${sub/x} or
+    // $/sub/x: the sub-dictionary passes too.
+    for (const char* ref : {"$params/rho", "${params/rho}", "$/params/rho",
+                            "$params/inner/nu"})
+    {
+        const auto scoped = dictionary::fromString(
+            "params { rho 1000; inner { nu 1e-6; } }\nrho0 "
+            + std::string(ref) + ";\n", "fluidProperties");
+        EXPECT_NO_THROW(scoped.checkKeywords({"rho0"})) << ref;
+    }
+
     // A keyword no $name expands is checked as before: the misspelling.
     // A variable of the included file that this file does not use passes
     // (several dictionaries share the file), unless it reads as a

@@ -40,7 +40,8 @@ using test::readText;
 // A .vtp read back by hand, trusting nothing but the format's rules.
 struct parsedArray
 {
-    std::string section;    // FieldData, PointData, Points, Verts
+    std::string section;    // FieldData, PointData, Points, Verts, Lines,
+                            // Polys
     std::string type;
     std::string name;
     int nComponents = 1;
@@ -115,8 +116,8 @@ parsedVtp parseVtp(const fs::path& file)
     }
 
     // Each DataArray tag with the section it sits in.
-    const std::regex tagRe("<(FieldData|PointData|Points|Verts)>|"
-                           "<DataArray [^>]*/>");
+    const std::regex tagRe("<(FieldData|PointData|Points|Verts|Lines|Polys)"
+                           "( [^>]*)?>|<DataArray [^>]*/>");
     std::string section;
     std::uint64_t expectedOffset = 0;
     for (auto it = std::sregex_iterator(vtp.header.begin(),
@@ -338,6 +339,62 @@ TEST(vtp, unwritableDirectoryIsFatal)
         writeVtp(dir.path()/"missing"/"x.vtp", makeBody(2, 3));
     });
     expectMessage(err, {"Cannot open", "missing"});
+}
+
+
+// Surfaces and outlines (the free surface): Polys or Lines with offsets
+// every nodesPerCell, the normals named on PointData, no Verts.
+TEST(vtp, meshesOfTrianglesAndSegments)
+{
+    const scratchDir scratch("vtpMesh");
+    const fs::path& dir = scratch.path();
+    vtpMesh m;
+    m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0.5}};
+    m.connectivity = {0, 1, 2, 1, 3, 2};
+    m.scalarFields.push_back({"p", {1.5, 2.5, 3.5, 4.5}});
+    m.vectorFields.push_back({"Normals", std::vector<vec3>(4, {0, 0, 1})});
+    m.normals = "Normals";
+    writeVtpMesh(dir/"tri.vtp", m, 0.25);
+    const parsedVtp tri = parseVtp(dir/"tri.vtp");
+    EXPECT_EQ(tri.piece.at("NumberOfPoints"), "4");
+    EXPECT_EQ(tri.piece.at("NumberOfPolys"), "2");
+    EXPECT_EQ(tri.piece.at("NumberOfVerts"), "0");
+    EXPECT_EQ(tri.piece.at("NumberOfLines"), "0");
+    EXPECT_NE(tri.header.find("<PointData Normals=\"Normals\">"),
+              std::string::npos);
+    EXPECT_EQ(tri["connectivity"].section, "Polys");
+    EXPECT_EQ(tri["connectivity"].bytes, bytesOf(m.connectivity));
+    EXPECT_EQ(tri["offsets"].bytes, bytesOf(std::vector<std::int64_t>{3, 6}));
+    EXPECT_EQ(tri["p"].bytes, bytesOf(m.scalarFields[0].second));
+    EXPECT_EQ(tri["Normals"].nComponents, 3);
+    EXPECT_EQ(tri["Points"].bytes, bytesOf(m.points));
+    EXPECT_EQ(tri["TimeValue"].bytes, bytesOf(std::vector<double>{0.25}));
+    EXPECT_NE(tri.tail.find("</VTKFile>"), std::string::npos);
+
+    vtpMesh lines;
+    lines.nodesPerCell = 2;
+    lines.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    lines.connectivity = {0, 1, 1, 2, 2, 0};
+    writeVtpMesh(dir/"lines.vtp", lines);
+    const parsedVtp seg = parseVtp(dir/"lines.vtp");
+    EXPECT_EQ(seg.piece.at("NumberOfLines"), "3");
+    EXPECT_EQ(seg.piece.at("NumberOfPolys"), "0");
+    EXPECT_EQ(seg["offsets"].section, "Lines");
+    EXPECT_EQ(seg["offsets"].bytes,
+              bytesOf(std::vector<std::int64_t>{2, 4, 6}));
+    EXPECT_FALSE(seg.has("TimeValue"));
+    EXPECT_EQ(seg.header.find("Normals="), std::string::npos);
+
+    // An empty surface (no fluid) is still a valid file.
+    writeVtpMesh(dir/"empty.vtp", vtpMesh{});
+    const parsedVtp empty = parseVtp(dir/"empty.vtp");
+    EXPECT_EQ(empty.piece.at("NumberOfPoints"), "0");
+    EXPECT_EQ(empty.piece.at("NumberOfPolys"), "0");
+
+    vtpMesh odd = lines;
+    odd.connectivity.pop_back();
+    expectMessage(catchFatal([&] { writeVtpMesh(dir/"odd.vtp", odd); }),
+                  {"5 connectivity entries for cells of 2 points"});
 }
 
 
