@@ -134,10 +134,14 @@ bool argList::parse(int argc, char** argv)
         ? std::filesystem::path(option("case"))
         : std::filesystem::current_path();
     std::error_code ec;
-    if (!std::filesystem::is_directory(casePath_, ec))
+    const auto status = std::filesystem::status(casePath_, ec);
+    if (!std::filesystem::is_directory(status))
     {
+        // -case system/controlDict, say: not "does not exist".
         fatalError("Case directory " + casePath_.string()
-            + " does not exist (given by -case)");
+            + (std::filesystem::exists(status)
+             ? " (given by -case) exists but is not a directory"
+             : " does not exist (given by -case)"));
     }
     casePath_ = std::filesystem::absolute(casePath_).lexically_normal();
     if (casePath_.has_filename() == false)

@@ -73,20 +73,68 @@ std::string dictionaryDetail::closest(const std::string& key,
 }
 
 
+std::string dictionaryDetail::clip(const std::string& text,
+                                   const std::size_t shown)
+{
+    if (text.size() <= shown)
+    {
+        return text;
+    }
+    // UTF-8: not cut inside a character, and characters counted (not
+    // their continuation bytes).
+    const auto continuation = [](char c)
+    {
+        return (static_cast<unsigned char>(c) & 0xC0) == 0x80;
+    };
+    std::size_t cut = shown;
+    while (cut > 0 && continuation(text[cut]))
+    {
+        --cut;
+    }
+    const std::size_t characters = std::size_t(std::count_if
+    (
+        text.begin(), text.end(), [&](char c){ return !continuation(c); }
+    ));
+    if (characters <= shown)
+    {
+        return text;
+    }
+    return text.substr(0, cut) + "... (" + std::to_string(characters)
+        + " characters)";
+}
+
+
+std::vector<std::string> dictionaryDetail::clip
+(
+    const std::vector<std::string>& words
+)
+{
+    std::vector<std::string> out;
+    out.reserve(words.size());
+    for (const auto& w : words)
+    {
+        out.push_back(clip(w));
+    }
+    return out;
+}
+
+
 std::string dictionaryDetail::describe(const token& t)
 {
     switch (t.type)
     {
         case token::kind::punctuation: return "'" + t.text + "'";
-        case token::kind::word: return "word '" + t.text + "'";
-        case token::kind::string: return "string " + quote(t.text);
-        case token::kind::integer: return "integer " + t.str();
-        case token::kind::floating: return "floating-point number " + t.str();
-        case token::kind::variable: return "variable '$" + t.text + "'";
-        case token::kind::directive: return "directive '#" + t.text + "'";
+        case token::kind::word: return "word '" + clip(t.text) + "'";
+        case token::kind::string: return "string " + quote(clip(t.text));
+        case token::kind::integer: return "integer " + clip(t.str());
+        case token::kind::floating:
+            return "floating-point number " + clip(t.str());
+        case token::kind::variable: return "variable '$" + clip(t.text) + "'";
+        case token::kind::directive:
+            return "directive '#" + clip(t.text) + "'";
         case token::kind::verbatim: return "verbatim string #{...#}";
     }
-    return "'" + t.text + "'";
+    return "'" + clip(t.text) + "'";
 }
 
 
@@ -172,11 +220,22 @@ std::string dictionaryDetail::quote(const std::string& text)
     // The reader keeps backslashes, except one that escapes a quote or a
     // newline; so a run of backslashes before either must be even before
     // the escaping one is added. (An odd run there cannot be written
-    // exactly in OpenFOAM's format: it gains one backslash.)
+    // exactly in OpenFOAM's format: it gains one backslash.) The reader
+    // takes "\r\n" and a lone '\r' for line ends: written as '\n', so that
+    // they read back (as '\n').
     std::string out = "\"";
     std::size_t run = 0;
-    for (const char c : text)
+    for (std::size_t i = 0; i < text.size(); ++i)
     {
+        char c = text[i];
+        if (c == '\r')
+        {
+            if (i + 1 < text.size() && text[i + 1] == '\n')
+            {
+                continue;
+            }
+            c = '\n';
+        }
         if (c == '"' || c == '\n')
         {
             out += (run % 2 == 0) ? "\\" : "\\\\";
@@ -364,7 +423,9 @@ entry::entry(const entry& e)
     file_(e.file_),
     line_(e.line_),
     isPattern_(e.isPattern_),
-    usedAsVariable_(e.usedAsVariable_)
+    usedAsVariable_(e.usedAsVariable_),
+    mergedFile_(e.mergedFile_),
+    mergedLine_(e.mergedLine_)
 {}
 
 
@@ -388,9 +449,11 @@ const dictionary& entry::dict() const
 {
     if (!dict_)
     {
-        fatalIOError(file_, line_, "Keyword '" + keyword_ + "' is not a "
-            "sub-dictionary: expected '{', found the value '"
-            + dictionaryDetail::joinTokens(tokens_) + "'", keyword_);
+        fatalIOError(file_, line_, "Keyword '"
+            + dictionaryDetail::clip(keyword_) + "' is not a sub-dictionary:"
+            " expected '{', found the value '"
+            + dictionaryDetail::clip(dictionaryDetail::joinTokens(tokens_))
+            + "'", keyword_);
     }
     return *dict_;
 }
@@ -406,8 +469,9 @@ const std::vector<token>& entry::tokens() const
 {
     if (dict_)
     {
-        fatalIOError(file_, line_, "Keyword '" + keyword_ + "' is a "
-            "sub-dictionary (opened at line " + std::to_string(dict_->line())
+        fatalIOError(file_, line_, "Keyword '"
+            + dictionaryDetail::clip(keyword_) + "' is a sub-dictionary "
+            "(opened at line " + std::to_string(dict_->line())
             + "), not a value", keyword_);
     }
     return tokens_;
@@ -587,7 +651,8 @@ const entry* dictionary::findEntry(const std::string& key) const
         {
             // Only an entry made in code can get here: the reader checks.
             fatalIOError(iter->file(), iter->line(), "Invalid regular "
-                "expression \"" + iter->keyword() + "\" as keyword: "
+                "expression \"" + dictionaryDetail::clip(iter->keyword())
+                + "\" as keyword: "
                 + err.what(), iter->keyword());
         }
     }
@@ -603,10 +668,11 @@ const entry& dictionary::lookupEntry(const std::string& key) const
     }
     const std::vector<std::string> present = keys();
     const std::string guess = dictionaryDetail::closest(key, present);
-    fatalIOError(file_, line_, "Keyword '" + key + "' is undefined in "
-        "dictionary \"" + name_ + "\"."
-        + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
-        + " Keywords present: " + str(present),
+    fatalIOError(file_, line_, "Keyword '" + dictionaryDetail::clip(key)
+        + "' is undefined in dictionary \"" + name_ + "\"."
+        + (guess.empty() ? ""
+         : " Did you mean '" + dictionaryDetail::clip(guess) + "'?")
+        + " Keywords present: " + str(dictionaryDetail::clip(present)),
         key);
 }
 
@@ -689,15 +755,17 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
             unread[e.file()].push_back(e.keyword());
             continue;
         }
-        fatalIOError(e.file(), e.line(), "Unknown keyword '" + e.keyword()
-            + "' in dictionary \"" + name_ + "\"."
+        fatalIOError(e.file(), e.line(), "Unknown keyword '"
+            + dictionaryDetail::clip(e.keyword()) + "' in dictionary \""
+            + name_ + "\"."
             + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
             + " Valid keywords are: " + str(valid),
             e.keyword());
     }
     for (const auto& [file, keywords] : unread)
     {
-        warning("Dictionary \"" + name_ + "\" does not read " + str(keywords)
+        warning("Dictionary \"" + name_ + "\" does not read "
+            + str(dictionaryDetail::clip(keywords))
             + " of the file it #includes: parameters for other dictionaries"
             " are fine there, a keyword meant for this one is not read."
             " Valid keywords are: " + str(valid), file);
@@ -713,7 +781,8 @@ void checkKeyword(const dictionary& d, const std::string& key)
 {
     if (!isValidWord(key))
     {
-        d.fatal("Invalid keyword '" + key + "' for dictionary \"" + d.name()
+        d.fatal("Invalid keyword '" + dictionaryDetail::clip(key)
+            + "' for dictionary \"" + d.name()
             + "\": a keyword is one word (no spaces, quotes, / ; { } $, and "
             "not starting with a digit, '.', '-' or punctuation)", key);
     }

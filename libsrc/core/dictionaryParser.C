@@ -26,6 +26,10 @@ namespace
 // distinct files (a cycle is caught directly).
 constexpr std::size_t maxIncludeDepth = 32;
 
+// Paths made of an #include's name are quoted in full up to this length
+// (beyond any real one), clipped beyond: the name may be a runaway string.
+constexpr std::size_t maxPathShown = 1024;
+
 // Nesting limits that keep the recursive reader off the end of the stack
 // whatever the input.
 constexpr int maxDictDepth = 256;
@@ -34,6 +38,8 @@ constexpr int maxNameDepth = 32;
 // A value grown past this by $macros (each doubling the last) is an error,
 // not an out-of-memory.
 constexpr std::size_t maxValueTokens = 10000000;
+
+using dictionaryDetail::clip;
 
 const std::vector<std::string> supportedDirectives =
 {
@@ -78,7 +84,7 @@ bool isKnownDirective(const std::string& name)
     {
         why = ".";
     }
-    fatalIOError(file, line, "Directive #" + name
+    fatalIOError(file, line, "Directive #" + clip(name)
         + " is not supported by sphvcpm" + why + " Supported directives "
         "are " + str(supportedDirectives),
         "#" + name);
@@ -151,11 +157,12 @@ const entry* findDotted(const dictionary* d, const std::string& key,
     return nullptr;
 }
 
-std::string readWholeFile(const std::filesystem::path& file,
-                          const std::string& errorFile, int errorLine,
-                          const std::string& what)
+// FatalError when file exists but is not a regular file: a FIFO or a
+// device would block the open or never end, a directory reads as nothing.
+void checkRegularFile(const std::filesystem::path& file,
+                      const std::string& errorFile, int errorLine,
+                      const std::string& what)
 {
-    // A FIFO or a device would block the open or never end.
     std::error_code ec;
     const auto status = std::filesystem::status(file, ec);
     if (!ec && std::filesystem::exists(status)
@@ -166,6 +173,14 @@ std::string readWholeFile(const std::filesystem::path& file,
             + (std::filesystem::is_directory(status) ? "a directory"
                : "not a regular file (a FIFO, socket or device)"));
     }
+}
+
+
+std::string readWholeFile(const std::filesystem::path& file,
+                          const std::string& errorFile, int errorLine,
+                          const std::string& what)
+{
+    checkRegularFile(file, errorFile, errorLine, what);
     std::ifstream is(file, std::ios::binary);
     if (!is)
     {
@@ -263,6 +278,7 @@ void dictionaryParser::add(dictionary& dict, entry&& e, inputMode mode)
         {
             if (existing->isDict() && e.isDict())
             {
+                existing->markMerged(e.file(), e.line());
                 dictionary& into = existing->dict();
                 for (auto& sub : e.dict().entries_)
                 {
@@ -282,8 +298,9 @@ void dictionaryParser::add(dictionary& dict, entry&& e, inputMode mode)
         }
         case inputMode::warn:
         {
-            warning("Duplicate keyword '" + e.keyword() + "' in dictionary \""
-                + dict.name() + "\" ignored (#inputMode warn); the entry "
+            warning("Duplicate keyword '" + clip(e.keyword())
+                + "' in dictionary \"" + dict.name() + "\" ignored "
+                "(#inputMode warn); the entry "
                 "from line " + std::to_string(existing->line()) + " is kept",
                 e.file(), e.line());
             return;
@@ -291,7 +308,7 @@ void dictionaryParser::add(dictionary& dict, entry&& e, inputMode mode)
         case inputMode::error:
         {
             fatalIOError(e.file(), e.line(), "Duplicate keyword '"
-                + e.keyword() + "' in dictionary \"" + dict.name()
+                + clip(e.keyword()) + "' in dictionary \"" + dict.name()
                 + "\" (first defined at line "
                 + std::to_string(existing->line()) + " of "
                 + existing->file() + ") while #inputMode is error",
@@ -454,7 +471,7 @@ void dictionaryParser::parseEntries(dictionary& dict, tokeniser& tk,
                 const std::string key =
                     dict.name_.substr(dict.name_.rfind('/') + 1);
                 fatalIOError(tk.file(), open->line, "Unexpected end of file "
-                    "in sub-dictionary '" + key + "' opened at line "
+                    "in sub-dictionary '" + clip(key) + "' opened at line "
                     + std::to_string(open->line) + ": expected '}'", key);
             }
             return;
@@ -521,7 +538,8 @@ void dictionaryParser::readEntry(dictionary& dict, tokeniser& tk,
         catch (const std::regex_error& err)
         {
             fatalIOError(tk.file(), keyTok.line, "Invalid regular "
-                "expression \"" + key + "\" as keyword: " + err.what(), key);
+                "expression \"" + clip(key) + "\" as keyword: " + err.what(),
+                key);
         }
     }
 
@@ -529,7 +547,8 @@ void dictionaryParser::readEntry(dictionary& dict, tokeniser& tk,
     if (!tk.peek(next))
     {
         fatalIOError(tk.file(), keyTok.line, "Unexpected end of file after "
-            "keyword '" + key + "': expected a value and ';', or '{'", key);
+            "keyword '" + clip(key) + "': expected a value and ';', or '{'",
+            key);
     }
 
     if (next.isPunctuation('{'))
@@ -537,7 +556,7 @@ void dictionaryParser::readEntry(dictionary& dict, tokeniser& tk,
         tk.read(next);
         if (depth_ >= maxDictDepth)
         {
-            fatalIOError(tk.file(), next.line, "Sub-dictionary '" + key
+            fatalIOError(tk.file(), next.line, "Sub-dictionary '" + clip(key)
                 + "' nested more than " + std::to_string(maxDictDepth)
                 + " levels deep", key);
         }
@@ -551,6 +570,10 @@ void dictionaryParser::readEntry(dictionary& dict, tokeniser& tk,
 
         if (where != scope::subDict && key == "FoamFile" && !isPattern)
         {
+            // Only field files act on the format, but a typo in it is an
+            // error in any file (OpenFOAM's default, ascii, when absent).
+            sub->getWordOrDefault("format", {"ascii", "binary"}, "ascii");
+
             // The header of the main file is kept aside; those of
             // included files are dropped.
             if (where == scope::mainFile)
@@ -571,7 +594,7 @@ void dictionaryParser::readEntry(dictionary& dict, tokeniser& tk,
     if (raw.size() == 1 && raw[0].type == token::kind::variable)
     {
         const resolved r = resolve(dict, raw[0].text, tk.file(), raw[0].line,
-            " in the value of keyword '" + key + "'");
+            " in the value of keyword '" + clip(key) + "'");
         if (r.ent && r.ent->isDict())
         {
             auto copy = std::make_unique<dictionary>(r.ent->dict());
@@ -602,13 +625,13 @@ std::vector<token> dictionaryParser::readValue(tokeniser& tk,
             {
                 const token& o = open.back();
                 fatalIOError(tk.file(), o.line, "Unexpected end of file in "
-                    "the value of keyword '" + key + "': expected '"
+                    "the value of keyword '" + clip(key) + "': expected '"
                     + (o.isPunctuation('(') ? ")" : "}") + "' to close '"
                     + o.text + "' opened at line " + std::to_string(o.line),
                     key);
             }
             fatalIOError(tk.file(), keyLine, "Unexpected end of file after "
-                "the value of keyword '" + key + "' (line "
+                "the value of keyword '" + clip(key) + "' (line "
                 + std::to_string(keyLine) + "): expected ';'", key);
         }
 
@@ -629,12 +652,12 @@ std::vector<token> dictionaryParser::readValue(tokeniser& tk,
                     if (t.isPunctuation('}'))
                     {
                         fatalIOError(tk.file(), lastLine, "Missing ';' "
-                            "after the value of keyword '" + key
+                            "after the value of keyword '" + clip(key)
                             + "': expected ';', found '}' at line "
                             + std::to_string(t.line), key);
                     }
                     fatalIOError(tk.file(), t.line, "Unmatched ')' in the "
-                        "value of keyword '" + key + "': expected ';'",
+                        "value of keyword '" + clip(key) + "': expected ';'",
                         key);
                 }
                 const bool paren = open.back().isPunctuation('(');
@@ -681,17 +704,17 @@ std::vector<token> dictionaryParser::expandValue
         if (t.type == token::kind::variable)
         {
             const resolved r = resolve(dict, t.text, file, t.line,
-                " in the value of keyword '" + key + "'");
+                " in the value of keyword '" + clip(key) + "'");
             if (r.ent && r.ent->isDict())
             {
                 if (depth == 0 && r.ent->dict().size())
                 {
                     // Its entries' ';' would end this entry early.
                     fatalIOError(file, t.line, "The sub-dictionary $"
-                        + t.text + " is expanded outside brackets in the "
-                        "value of keyword '" + key + "': write '" + key
-                        + " $" + t.text + ";' to copy it, or expand it "
-                        "inside { } or ( )", key);
+                        + clip(t.text) + " is expanded outside brackets in "
+                        "the value of keyword '" + clip(key) + "': write '"
+                        + clip(key) + " $" + clip(t.text) + ";' to copy it, "
+                        "or expand it inside { } or ( )", key);
                 }
                 dictionaryDetail::appendDictTokens(r.ent->dict(), out,
                                                    t.line);
@@ -708,7 +731,7 @@ std::vector<token> dictionaryParser::expandValue
             {
                 fatalIOError(file, t.line, "The value of keyword '" + key
                     + "' grows past " + std::to_string(maxValueTokens)
-                    + " tokens through $" + t.text, key);
+                    + " tokens through $" + clip(t.text), key);
             }
         }
         else if (t.type == token::kind::directive)
@@ -717,9 +740,9 @@ std::vector<token> dictionaryParser::expandValue
             {
                 refuseDirective(t.text, file, t.line);
             }
-            fatalIOError(file, t.line, "Directive #" + t.text + " cannot "
-                "appear inside the value of keyword '" + key + "': write it "
-                "on its own, between entries", key);
+            fatalIOError(file, t.line, "Directive #" + clip(t.text)
+                + " cannot appear inside the value of keyword '" + clip(key)
+                + "': write it on its own, between entries", key);
         }
         else
         {
@@ -743,7 +766,8 @@ void dictionaryParser::readDirective(dictionary& dict, tokeniser& tk,
         if (!have || a.type != token::kind::string)
         {
             fatalIOError(file, have ? a.line : t.line, "Expected a quoted "
-                "file name after #" + name + ", found " + foundText(have, a),
+                "file name after #" + clip(name) + ", found "
+                + foundText(have, a),
                 "#" + name);
         }
         include(dict, tk, t, a.text,
@@ -812,7 +836,8 @@ void dictionaryParser::readDirective(dictionary& dict, tokeniser& tk,
                         catch (const std::regex_error& err)
                         {
                             fatalIOError(file, k.line, "Invalid regular "
-                                "expression \"" + k.text + "\" in #remove: "
+                                "expression \"" + clip(k.text)
+                                + "\" in #remove: "
                                 + err.what(), "#remove");
                         }
                     }
@@ -875,8 +900,8 @@ void dictionaryParser::readKeyVariable(dictionary& dict, tokeniser& tk,
         // $name { ... }: the value of name is the keyword.
         if (r.ent && r.ent->isDict())
         {
-            fatalIOError(tk.file(), t.line, "'$" + t.text + "' used as a "
-                "keyword must name a single word, but it is a "
+            fatalIOError(tk.file(), t.line, "'$" + clip(t.text) + "' used "
+                "as a keyword must name a single word, but it is a "
                 "sub-dictionary", "$" + t.text);
         }
         const std::vector<token>& v = r.ent ? r.ent->tokens() : r.tokens;
@@ -884,9 +909,9 @@ void dictionaryParser::readKeyVariable(dictionary& dict, tokeniser& tk,
          || (v[0].type != token::kind::word
           && v[0].type != token::kind::string))
         {
-            fatalIOError(tk.file(), t.line, "'$" + t.text + "' used as a "
-                "keyword must name a single word, found '"
-                + dictionaryDetail::joinTokens(v) + "'", "$" + t.text);
+            fatalIOError(tk.file(), t.line, "'$" + clip(t.text) + "' used "
+                "as a keyword must name a single word, found '"
+                + clip(dictionaryDetail::joinTokens(v)) + "'", "$" + t.text);
         }
         token key = v[0];
         key.line = t.line;
@@ -897,7 +922,7 @@ void dictionaryParser::readKeyVariable(dictionary& dict, tokeniser& tk,
     // $name; splices the entries of sub-dictionary name.
     if (!r.ent || !r.ent->isDict())
     {
-        fatalIOError(tk.file(), t.line, "Cannot splice '$" + t.text
+        fatalIOError(tk.file(), t.line, "Cannot splice '$" + clip(t.text)
             + "' into dictionary \"" + dict.name() + "\": it is not a "
             "sub-dictionary (a $name in keyword position copies the entries "
             "of a sub-dictionary)", "$" + t.text);
@@ -941,7 +966,7 @@ void dictionaryParser::include(dictionary& dict, tokeniser& tk,
         }
         else if (!optional)
         {
-            fatalIOError(file, directive.line, what + " \"" + name
+            fatalIOError(file, directive.line, what + " \"" + clip(name)
                 + "\": SPHVCPM_DIR is not set (source etc/bashrc of the "
                 "installation)", what);
         }
@@ -965,15 +990,20 @@ void dictionaryParser::include(dictionary& dict, tokeniser& tk,
     {
         if (optional)
         {
-            return;
+            return;   // also a directory or device, as OpenFOAM
+        }
+        // There, but not a file (a directory, /dev/null): not "missing".
+        for (const auto& c : candidates)
+        {
+            checkRegularFile(c, file, directive.line, what + " file");
         }
         std::vector<std::string> looked;
         for (const auto& c : candidates)
         {
-            looked.push_back("\"" + c.string() + "\"");
+            looked.push_back("\"" + clip(c.string(), maxPathShown) + "\"");
         }
         fatalIOError(file, directive.line, "Cannot find " + what + " file \""
-            + name + "\": looked for " + str(looked),
+            + clip(name) + "\": looked for " + str(looked),
             what);
     }
 
@@ -990,11 +1020,11 @@ void dictionaryParser::include(dictionary& dict, tokeniser& tk,
             chain += f + " -> ";
         }
         fatalIOError(file, directive.line, "Recursive " + what + " of \""
-            + name + "\": include chain " + chain + canonical, what);
+            + clip(name) + "\": include chain " + chain + canonical, what);
     }
     if (includeStack_.size() >= maxIncludeDepth)
     {
-        fatalIOError(file, directive.line, what + " of \"" + name
+        fatalIOError(file, directive.line, what + " of \"" + clip(name)
             + "\" nested more than " + std::to_string(maxIncludeDepth)
             + " levels deep", what);
     }
@@ -1070,11 +1100,12 @@ dictionaryParser::resolved dictionaryParser::resolve
     const std::string base =
         cut == std::string::npos ? name : name.substr(cut + 1);
     const std::string guess = dictionaryDetail::closest(base, keys);
-    fatalIOError(file, line, "Undefined variable '$" + var + "'" + context
-        + ": no keyword '" + name + "' in dictionary \"" + searched->name()
+    fatalIOError(file, line, "Undefined variable '$" + clip(var) + "'"
+        + context + ": no keyword '" + clip(name) + "' in dictionary \""
+        + searched->name()
         + "\" or its parents, and no environment variable of that name."
-        + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
-        + " Valid keywords are: " + str(keys),
+        + (guess.empty() ? "" : " Did you mean '" + clip(guess) + "'?")
+        + " Valid keywords are: " + str(clip(keys)),
         "$" + var);
 }
 
@@ -1148,14 +1179,15 @@ std::string dictionaryParser::expandText
             }
             if (k >= text.size())
             {
-                fatalIOError(file, line, "Unterminated '${' in \"" + text
+                fatalIOError(file, line, "Unterminated '${' in \""
+                    + clip(text)
                     + "\"" + context + ": expected '}'");
             }
             if (++textDepth_ > maxNameDepth)
             {
                 fatalIOError(file, line, "Variable names nested more than "
                     + std::to_string(maxNameDepth) + " levels deep in \""
-                    + text + "\"" + context);
+                    + clip(text) + "\"" + context);
             }
             name = expandText(dict, text.substr(j + 1, k - j - 1), file,
                               line, context);
@@ -1181,7 +1213,7 @@ std::string dictionaryParser::expandText
         const resolved r = resolve(dict, name, file, line, context);
         if (r.ent && r.ent->isDict())
         {
-            fatalIOError(file, line, "Variable '$" + name + "'" + context
+            fatalIOError(file, line, "Variable '$" + clip(name) + "'" + context
                 + " names a sub-dictionary; expected a word or string");
         }
         const std::vector<token>& v = r.ent ? r.ent->tokens() : r.tokens;

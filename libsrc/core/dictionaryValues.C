@@ -20,6 +20,7 @@ namespace sphvcpm
 namespace
 {
 
+using dictionaryDetail::clip;
 using dictionaryDetail::describe;
 
 // Reads tokens left to right; every error names the keyword, the line of
@@ -52,7 +53,7 @@ public:
 
     [[noreturn]] void failAt(std::size_t i, const std::string& message) const
     {
-        fatalIOError(file_, lineAt(i), "Keyword '" + keyword_ + "': "
+        fatalIOError(file_, lineAt(i), "Keyword '" + clip(keyword_) + "': "
             + message, keyword_);
     }
 
@@ -118,7 +119,7 @@ public:
                 == std::string::npos && !t.text.empty();
             if (digits)
             {
-                failAt(i_, "integer " + t.text + " is out of range for "
+                failAt(i_, "integer " + clip(t.text) + " is out of range for "
                     + typeName + " (" + std::to_string(lo) + " to "
                     + std::to_string(hi) + ")");
             }
@@ -126,7 +127,7 @@ public:
         }
         if (t.integerValue < lo || t.integerValue > hi)
         {
-            failAt(i_, "integer " + t.str() + " is out of range for "
+            failAt(i_, "integer " + clip(t.str()) + " is out of range for "
                 + typeName + " (" + std::to_string(lo) + " to "
                 + std::to_string(hi) + ")");
         }
@@ -289,7 +290,8 @@ public:
                 }
                 if (close + 1 != t.text.size())
                 {
-                    failAt(i_ - 1, "unexpected '" + t.text.substr(close + 1)
+                    failAt(i_ - 1, "unexpected '"
+                        + clip(t.text.substr(close + 1))
                         + "' after ']' in dimensions");
                 }
                 append(t.text.substr(0, close), true);
@@ -312,7 +314,7 @@ public:
         std::string message;
         if (!dictionaryDetail::parseDimensions(text, dims, message))
         {
-            failAt(open, message + " in dimensions [" + text + "]");
+            failAt(open, message + " in dimensions [" + clip(text) + "]");
         }
         return dims;
     }
@@ -555,8 +557,8 @@ const entry& valueEntry(const dictionary& dict, const std::string& key,
     const entry& e = dict.lookupEntry(key);
     if (e.isDict())
     {
-        fatalIOError(e.file(), e.line(), "Keyword '" + key + "': expected "
-            + what + ", found a sub-dictionary", key);
+        fatalIOError(e.file(), e.line(), "Keyword '" + clip(key)
+            + "': expected " + what + ", found a sub-dictionary", key);
     }
     return e;
 }
@@ -617,7 +619,8 @@ T dictionary::getDimensioned(const std::string& key,
     r.expectEnd();
     if (hasDims && found != dims)
     {
-        fatalIOError(e.file(), e.line(), "Keyword '" + key + "': dimensions "
+        fatalIOError(e.file(), e.line(), "Keyword '"
+            + dictionaryDetail::clip(key) + "': dimensions "
             "do not match: expected " + dims.str() + ", found "
             + found.str(), key);
     }
@@ -632,7 +635,8 @@ std::string dictionary::getWord(const std::string& key,
     if (std::find(allowed.begin(), allowed.end(), w) == allowed.end())
     {
         const std::string guess = dictionaryDetail::closest(w, allowed);
-        fatalAt(key, "Keyword '" + key + "': unknown value '" + w + "'."
+        fatalAt(key, "Keyword '" + dictionaryDetail::clip(key)
+            + "': unknown value '" + dictionaryDetail::clip(w) + "'."
             + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
             + " Valid values are: " + str(allowed));
     }
@@ -656,7 +660,8 @@ double dictionary::getPositive(const std::string& key) const
     const double v = get<double>(key);
     if (!(v > 0))
     {
-        fatalAt(key, "Keyword '" + key + "': expected a positive number, "
+        fatalAt(key, "Keyword '" + dictionaryDetail::clip(key)
+            + "': expected a positive number, "
             "found " + dictionaryDetail::formatScalar(v));
     }
     return v;

@@ -4,6 +4,7 @@
 // The dictionary lexer (see tokeniser.H).
 
 #include "tokeniser.H"
+#include "dictionaryParser.H"
 #include "error.H"
 
 #include <cctype>
@@ -56,12 +57,51 @@ bool isVariableChar(int c)
         && c != '{' && c != '}' && c != '$';
 }
 
+// Old Mac files end lines with a lone '\r' and Windows ones with "\r\n":
+// both become '\n', so that a // comment ends there (instead of taking the
+// rest of the file), a string continues after a backslash and lines are
+// counted once.
+std::string unixLineEnds(std::string text)
+{
+    if (text.find('\r') == std::string::npos)
+    {
+        return text;
+    }
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i)
+    {
+        if (text[i] != '\r')
+        {
+            out += text[i];
+            continue;
+        }
+        out += '\n';
+        if (i + 1 < text.size() && text[i + 1] == '\n')
+        {
+            ++i;
+        }
+    }
+    return out;
+}
+
+// The UTF-8 byte-order mark some editors put first: not a keyword (it
+// would be an invisible one).
+std::string withoutByteOrderMark(std::string text)
+{
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+    {
+        text.erase(0, 3);
+    }
+    return text;
+}
+
 } // End anonymous namespace
 
 
 tokeniser::tokeniser(std::string text, std::string file)
 :
-    text_(std::move(text)),
+    text_(unixLineEnds(withoutByteOrderMark(std::move(text)))),
     file_(std::move(file))
 {}
 
@@ -260,13 +300,13 @@ void tokeniser::readNumber(token& t)
     const double v = std::strtod(s, &end);
     if (end != s + buf.size())
     {
-        error(t.line, "Bad number '" + buf + "'");
+        error(t.line, "Bad number '" + dictionaryDetail::clip(buf) + "'");
     }
     if (errno == ERANGE && std::isinf(v))
     {
         // strtod gives infinity: no input means that.
-        error(t.line, "Number '" + buf + "' is too large (beyond the"
-            " largest double, about 1.8e308)");
+        error(t.line, "Number '" + dictionaryDetail::clip(buf)
+            + "' is too large (beyond the largest double, about 1.8e308)");
     }
     t.type = token::kind::floating;
     t.floatValue = v;
@@ -301,7 +341,8 @@ void tokeniser::readWord(token& t)
     }
     if (depth > 0)
     {
-        error(openLine, "Unbalanced parentheses in word '" + t.text
+        error(openLine, "Unbalanced parentheses in word '"
+            + dictionaryDetail::clip(t.text)
             + "': expected ')', found "
             + (look() < 0 ? std::string("end of file")
                           : "'" + std::string(1, char(look())) + "'"));
@@ -367,7 +408,8 @@ void tokeniser::readVariable(token& t)
             const int c = get();
             if (c < 0)
             {
-                error(t.line, "Unterminated variable '$" + t.text
+                error(t.line, "Unterminated variable '$"
+                    + dictionaryDetail::clip(t.text)
                     + "': expected '}', found end of file");
             }
             t.text += char(c);
@@ -413,7 +455,8 @@ void tokeniser::readVariable(token& t)
     }
     if (depth > 0)
     {
-        error(t.line, "Unbalanced parentheses in variable '$" + t.text
+        error(t.line, "Unbalanced parentheses in variable '$"
+            + dictionaryDetail::clip(t.text)
             + "': expected ')'");
     }
 }

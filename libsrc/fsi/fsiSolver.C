@@ -259,6 +259,26 @@ void fsiSolver::readStartTime()
     // Index 0: the initial state (generateParticles), not a solver write.
     freshStart_ = state.index == 0;
     restartC0_ = state.solverValue("c0", 0);
+    // The one value this solver keeps in uniform/time: an edited or
+    // misspelt one would be passed over and c0 derived afresh.
+    const std::string timeFile =
+        (caseDir_/startTimeName_/"uniform"/"time").string();
+    for (const auto& [key, value] : state.solverValues)
+    {
+        if (key != "c0")
+        {
+            fatalIOError(timeFile, 0, "Unknown keyword '" + key + "' in "
+                + timeFile + ": the solver writes only c0 there besides"
+                  " the time (value, name, index, deltaT, deltaT0,"
+                  " beginTime)", key);
+        }
+        if (!(value > 0))
+        {
+            fatalIOError(timeFile, 0, "Keyword 'c0' in " + timeFile
+                + ": the speed of sound the run started with must be > 0,"
+                  " found " + str(value), "c0");
+        }
+    }
     time_ = state.value;
     timeIndex_ = state.index;
     beginTime_ = time_;
@@ -969,6 +989,22 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
             : "lower deltaT, or set adjustTimeStep yes")
         << "), a speed of sound too low for the impact"
            " (raise c0), or particles packed too closely at the start.";
+    if (wallsMove_)
+    {
+        // A motion in the wrong unit, or a table's stray row, throws the
+        // walls and the water with them: say how fast they go.
+        double wallSpeed = 0;
+        for (label i = 0; i < v.n; ++i)
+        {
+            if (v.kind[i] == wallKind)
+            {
+                wallSpeed = std::max(wallSpeed, double(mag(v.velocity[i])));
+            }
+        }
+        msg << " Walls move here (constant/motion), at up to "
+            << str(wallSpeed) << " m/s at time " << str(time_, 10)
+            << ": check that the motion is the one meant.";
+    }
     if (model_.timeScheme == timeSchemeType::verlet)
     {
         msg << " With timeScheme verlet, density diffusion grows between its"

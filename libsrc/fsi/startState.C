@@ -147,6 +147,24 @@ void checkStartState(const fs::path& caseDir,
                 " solvers holds every body, so the directory is damaged");
         }
     }
+    // ... and no other: a body the initial time lacks (a directory copied
+    // in) would join the run unannounced.
+    if (initial != startTimeName)
+    {
+        for (const particleBody& b : bodies)
+        {
+            if (solidsAlone && b.type() != bodyType::solid) continue;
+            if (std::find(initialBodies.begin(), initialBodies.end(),
+                          b.name()) == initialBodies.end())
+            {
+                fatalError("Body " + b.name() + " of the restart time " + dir
+                    + " is not in the initial time " + initial + "/: the"
+                      " solvers write the bodies they started with. Remove"
+                      " " + dir + "/" + b.name() + ", or add the body to"
+                      " system/generateParticlesDict and start afresh");
+            }
+        }
+    }
     for (const particleBody& b : bodies)
     {
         if (solidsAlone && b.type() != bodyType::solid) continue;

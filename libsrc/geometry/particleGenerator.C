@@ -113,6 +113,15 @@ void particleGenerator::readBody
             " a body is a sub-dictionary with a plain name, e.g. " + name
             + " { type fluid; shapes { ... } }");
     }
+    if (e.mergedLine() > 0)
+    {
+        // Read as OpenFOAM reads it, the second would merge into the first:
+        // a wall's container and a fluid's shapes became one body.
+        fatalIOError(e.mergedFile(), e.mergedLine(), "Body '" + name
+            + "' is given twice in 'bodies' (first at line "
+            + std::to_string(e.line()) + "): the two would be read as one"
+              " body. Give each body its own name", name);
+    }
     const dictionary& dict = e.dict();
     dict.checkKeywords(bodyKeywords);
 
@@ -179,6 +188,15 @@ void particleGenerator::readBody
     }
     if (dict.found("container"))
     {
+        // The shell of a box: a tank's walls. Of fluid it would be a ring
+        // of water round an empty box, of a solid a hollow box.
+        if (type != bodyType::wall)
+        {
+            dict.fatalAt("container", "Keyword 'container': body '" + name
+                + "' is a " + bodyTypeName(type) + "; 'container' is the"
+                  " walls of a tank, for wall bodies (a " + bodyTypeName(type)
+                + " takes its region from 'shapes')");
+        }
         const dictionary& c = dict.subDict("container");
         c.checkKeywords(containerShape::keywords());
         spec.shapes.add
@@ -366,6 +384,16 @@ void particleGenerator::checkSolid
                 + shapeDetail::str(bb.min, nDimensions_) + " to "
                 + shapeDetail::str(bb.max, nDimensions_) + "): a clamp must"
                 " overlap the body's shapes", "clamp");
+        }
+        if (nClamped == body.size())
+        {
+            // Held everywhere it neither bends nor moves (unless the
+            // clamp's motion moves it rigidly): most likely a clamp box
+            // drawn round the whole body.
+            warning(what + ": its clamp holds all of its "
+                + std::to_string(body.size()) + " particles, so it cannot"
+                  " deform; a clamp usually holds one end (the part inside a"
+                  " support)", spec.clampFile, spec.clampLine);
         }
         summary.nClamped = nClamped;
     }

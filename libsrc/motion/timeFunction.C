@@ -335,6 +335,15 @@ void timeFunction::readTable
             valueCol = columnOf(dict, "valueColumn", valueName, headerLine);
             if (const dictionary* sel = dict.findDict("select"))
             {
+                if (sel->keys().empty())
+                {
+                    // Every row kept: a shared file's cases run into each
+                    // other (times going back), named far from the cause.
+                    dict.fatalAt("select", "Keyword 'select' in dictionary"
+                        " \"" + dict.name() + "\" is empty: give the"
+                          " columns and texts of the rows to keep,"
+                          " select { column text; }, or leave it out");
+                }
                 for (const std::string& key : sel->keys())
                 {
                     const std::vector<token>& toks =

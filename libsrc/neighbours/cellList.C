@@ -2,6 +2,7 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 #include "cellList.H"
+#include "formatting.H"
 #include "error.H"
 
 #include <cmath>
@@ -78,10 +79,13 @@ cellGrid makeCellGrid(const point& lower, const point& upper,
         const scalar c = cellCount(length, g.invCellSize);
         if (!(c >= 1) || c > 1e6)
         {
-            fatalError("makeCellGrid: the domain bounds give "
-                + std::to_string(c) + " cells in one direction (length "
-                + std::to_string(length) + " m, cell size "
-                + std::to_string(g.cellSize) + " m); check the domain");
+            fatalError("The domain's bounds give " + str(double(c))
+                + " cells in one direction (length " + str(double(length))
+                + " m, cell size " + str(double(g.cellSize)) + " m):"
+                  " check the domain of system/sphSchemes, or, without one,"
+                  " the particles' positions (a particle far from the rest:"
+                  " a damaged field file, or a motion of constant/motion"
+                  " that throws a wall far away)");
         }
         return int(c);
     };
@@ -96,7 +100,7 @@ cellGrid makeCellGrid(const point& lower, const point& upper,
     const double total = double(g.nx)*g.ny*g.nz;
     if (total >= maxCells)
     {
-        fatalError("makeCellGrid: " + std::to_string(total)
+        fatalError("The domain's " + str(total)
             + " cells do not fit the 32-bit cell key (at most 2^30); the"
               " domain is too large for the particle spacing (cellDivisor 1"
               " in system/sphSchemes gives the fewest cells)");

@@ -12,6 +12,7 @@
 // findTimes never lists.
 
 #include "timeDirectory.H"
+#include "formatting.H"
 #include "dictionary.H"
 #include "error.H"
 #include "particleFiles.H"
@@ -127,6 +128,41 @@ particleBody readBodyProperties(const fs::path& dir)
 }
 
 
+// A 2D body lies in the plane z = 0 and moves in it: a z in its positions
+// or velocities (an edited file) would move particles out of the plane,
+// where the 2D kernels do not look.
+void checkPlanar(const fs::path& file, const particleBody& body,
+                 const std::string& name)
+{
+    if (body.nDimensions() != 2 || (name != "position" && name != "U"))
+    {
+        return;
+    }
+    auto check = [&](const auto& values)
+    {
+        for (std::size_t i = 0; i < values.size(); ++i)
+        {
+            if (values[i].z != 0)
+            {
+                fatalIOError(file.string(), 0, "Body '" + body.name()
+                    + "' is 2D (nDimensions 2 in its bodyProperties) but"
+                      " value " + std::to_string(i) + " of field '" + name
+                    + "' has z = " + str(double(values[i].z)) + ": a 2D case"
+                      " lies and moves in the plane z = 0");
+            }
+        }
+    };
+    if (name == "position")
+    {
+        check(body.position());
+    }
+    else if (body.kindOf(name) == fieldKind::vectorField)
+    {
+        check(body.vectorField(name));
+    }
+}
+
+
 particleBody readBody(const fs::path& dir)
 {
     particleBody body = readBodyProperties(dir);
@@ -168,6 +204,7 @@ particleBody readBody(const fs::path& dir)
     for (const auto& name : files)
     {
         readField(dir/name, body);
+        checkPlanar(dir/name, body, name);
         if (size >= 0 && body.size() != size)
         {
             fatalIOError((dir/name).string(), 0, "Field '" + name + "' has "

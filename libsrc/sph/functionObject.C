@@ -57,7 +57,7 @@ functionObject::functionObject(std::string name, const dictionary& dict,
             dict.fatalAt("writeInterval", "Function object '" + name_
                 + "': writeInterval of writeControl timeStep is a number"
                   " of time steps (a whole number >= 1), found "
-                + std::to_string(writeInterval_));
+                + str(double(writeInterval_)));
         }
     }
     // NaN: nothing sampled yet (any finite value could be a real time).

@@ -260,6 +260,18 @@ mistake()   # mistake <what> <sed expression on constant/motion> <pattern> [stat
 mistake "a tank tilted 10 degrees at the start" \
     's/angle   { .* }/angle   { type constant; value 10; units degrees; }/' \
     "Wall tank is moved 0.0[0-9]+ m by its motion at the start time 0 .*, into the fluid: [0-9]+ particles of water lie closer to it than the contact gap"
+# A motion in the wrong unit throws the tank: the blow-up says how fast the
+# walls go and points at constant/motion.
+m="$scratch/thrown"
+rm -rf "$m"; cp -r "$scratch/stillWater" "$m"
+rm -rf "$m"/[1-9]* "$m"/0.* "$m/postProcessing"
+sed -i 's/^endTime .*/endTime 0.05;/' "$m/system/controlDict"
+sed -i 's/angle   { .* }/angle   { type sinusoid; amplitude 1e6; period 1; units degrees; }/' \
+    "$m/constant/motion"
+timeout 300 sphVcpmFsi -case "$m" > "$scratch/log.thrown" 2>&1
+check "a tank thrown by its motion: exit status 1" [ $? -eq 1 ]
+expectIn "a tank thrown by its motion: the walls' speed and constant/motion" \
+    "$scratch/log.thrown" "Walls move here \(constant/motion\), at up to [0-9.e+]+ m/s"
 # The rolling tank turned 8 degrees at the start: its tank and its plate
 # (a solid placed by its clamp's motion) both crowd the oil.
 m="$scratch/rolledAtStart"

@@ -170,6 +170,36 @@ fresh; sed -i 's/^coefSound .*/coefSound 7;/' "$scratch/c/constant/fluidProperti
 check "a low speed of sound only warns: the run ends" grep -q '^End' "$scratch/c/log.solver"
 expectIn "a low speed of sound: warning" "$scratch/c/log.solver" "Warning"
 
+# A restart time with a body the initial time lacks (a directory copied
+# in): an error naming it, not a body joining the run.
+fresh; sed -i 's/^endTime .*/endTime 0.01; writeControl timeStep; writeInterval 5;/' \
+    "$scratch/c/system/controlDict"
+(cd "$scratch/c" && sphVcpmFsi > log.first 2>&1)
+restartTime=$(cd "$scratch/c" && ls -d 0.* | sort -g | tail -1)
+check "a run to restart from wrote $restartTime" [ -n "$restartTime" ]
+cp -r "$scratch/c/$restartTime/water" "$scratch/c/$restartTime/water2"
+expectFatal "a body not in 0/ at the restart time" \
+    "Body water2 of the restart time .* is not in the initial time 0/"
+rm -rf "$scratch/c/$restartTime/water2"
+# uniform/time holds c0 of the run's start: a damaged or misspelt one is
+# named, not passed over.
+timeFile="$scratch/c/$restartTime/uniform/time"
+cp "$timeFile" "$scratch/time.orig"
+sed -i 's/^c0 .*/c0 -4;/' "$timeFile"
+expectFatal "c0 -4 in uniform/time" "uniform/time" "Keyword 'c0' .* must be > 0"
+cp "$scratch/time.orig" "$timeFile"; sed -i 's/^c0 /cO /' "$timeFile"
+expectFatal "cO in uniform/time" "Unknown keyword 'cO' in .*uniform/time"
+cp "$scratch/time.orig" "$timeFile"
+# A 2D body's positions and velocities lie in z = 0: a z in a field file
+# (ascii or binary) is an error naming the file and the value.
+(cd "$scratch/c" && sed -i 's/^writeFormat .*/writeFormat ascii;/' system/controlDict \
+    && rm -rf 0.* && sphVcpmFsi > log.first 2>&1)
+restartTime=$(cd "$scratch/c" && ls -d 0.* | sort -g | tail -1)
+sed -i '0,/^(\([-0-9.e]*\) \([-0-9.e]*\) 0)$/s//(\1 \2 0.01)/' \
+    "$scratch/c/$restartTime/water/position"
+expectFatal "z = 0.01 in a 2D position file" "$restartTime/water/position" \
+    "Body 'water' is 2D .* value 0 of field 'position' has z = 0\.01"
+
 # A warning of controlDict is given once, after the banner (the solver's
 # first look at controlDict, for the device, is quiet).
 fresh; sed -i 's/^endTime .*/&\nwriteCompression on;/' "$scratch/c/system/controlDict"

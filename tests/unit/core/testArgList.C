@@ -114,6 +114,34 @@ TEST(argList, setsFoamCaseForIncludes)
 }
 
 
+// -case given a file (system/controlDict, say) is told apart from a
+// missing directory.
+TEST(argList, caseMustBeADirectory)
+{
+    const savedEnv foamCase("FOAM_CASE");
+    const savedEnv foamCaseName("FOAM_CASENAME");
+    scratchDir dir("argListCase");
+    const fs::path file = dir.write("damBreak/system/controlDict", "a 1;\n");
+
+    argList args("testApp", "test");
+    const FatalError err = catchFatal([&]
+    {
+        parse(args, {"-case", file.string()});
+    });
+    expectMessage(err, {"Case directory " + file.string()
+        + " (given by -case) exists but is not a directory"});
+    EXPECT_EQ(err.message().find("does not exist"), std::string::npos)
+        << err.message();
+
+    argList missing("testApp", "test");
+    expectMessage(catchFatal([&]
+    {
+        parse(missing, {"-case", (dir.path()/"none").string()});
+    }), {"Case directory " + (dir.path()/"none").string()
+         + " does not exist (given by -case)"});
+}
+
+
 TEST(argList, parseWordList)
 {
     using words = std::vector<std::string>;

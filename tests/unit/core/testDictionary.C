@@ -68,6 +68,68 @@ TEST(dictionaryLexer, commentsAndLineCounting)
 }
 
 
+// Old Mac files end lines with a lone '\r', Windows ones with "\r\n": a //
+// comment ends there (it used to swallow the rest of an old Mac file) and
+// lines are counted once per line end.
+TEST(dictionaryLexer, carriageReturnLineEnds)
+{
+    const auto mac = dictionary::fromString
+    (
+        "// comment\ra 1;\r\r// another\rb \"two\\\rlines\";\rc 3;\r",
+        "mac"
+    );
+    EXPECT_EQ(mac.keys(), (std::vector<std::string>{"a", "b", "c"}));
+    EXPECT_EQ(mac.lookupEntry("a").line(), 2);
+    EXPECT_EQ(mac.lookupEntry("b").line(), 5);
+    EXPECT_EQ(mac.get<std::string>("b"), "two\nlines");
+    EXPECT_EQ(mac.lookupEntry("c").line(), 7);
+
+    const auto windows = dictionary::fromString
+    (
+        "// comment\r\na 1;\r\n\r\nb \"two\\\r\nlines\";\r\nc 3;\r\n",
+        "windows"
+    );
+    EXPECT_EQ(windows.keys(), (std::vector<std::string>{"a", "b", "c"}));
+    EXPECT_EQ(windows.lookupEntry("a").line(), 2);
+    EXPECT_EQ(windows.lookupEntry("b").line(), 4);
+    EXPECT_EQ(windows.get<std::string>("b"), "two\nlines");
+    EXPECT_EQ(windows.lookupEntry("c").line(), 6);
+
+    // Errors point at the right line too.
+    expectError(catchFatal([]
+    {
+        dictionary::fromString("a 1;\r// x\rb (1 2;\r", "mac");
+    }), "mac", 3, {"expected ')' to close '(' opened at line 3"});
+
+    // A string set in code with them is written so that it reads back.
+    dictionary set("set");
+    set.set("s", "a\rb\r\nc");
+    std::ostringstream os;
+    set.write(os);
+    EXPECT_EQ(dictionary::fromString(os.str()).get<std::string>("s"),
+              "a\nb\nc") << os.str();
+}
+
+
+// A UTF-8 byte-order mark (editors on Windows add one) is not a keyword.
+TEST(dictionaryLexer, byteOrderMarkSkipped)
+{
+    const auto d = dictionary::fromString("\xEF\xBB\xBF" "a 1;\nb 2;\n");
+    EXPECT_EQ(d.keys(), (std::vector<std::string>{"a", "b"}));
+    EXPECT_EQ(d.lookupEntry("b").line(), 2);
+    EXPECT_NO_THROW(d.checkKeywords({"a", "b"}));
+
+    scratchDir dir("dictBom");
+    const auto file = dir.write("fvSolution", "\xEF\xBB\xBF"
+        "/* banner */\nFoamFile { format ascii; object fvSolution; }\n"
+        "PISO { nCorrectors 2; }\n");
+    const auto f = dictionary::fromFile(file);
+    ASSERT_NE(f.header(), nullptr);
+    EXPECT_EQ(f.keys(), (std::vector<std::string>{"PISO"}));
+    EXPECT_EQ(f.subDict("PISO").get<label>("nCorrectors"), 2);
+}
+
+
 TEST(dictionaryLexer, wordsKeepBalancedParentheses)
 {
     const auto d = dictionary::fromString

@@ -340,6 +340,112 @@ TEST(dictionaryErrors, nulByteDoesNotCutTheReport)
 }
 
 
+// The header's format is checked in every dictionary, not only in the
+// field files that act on it: a typo there must not pass unnoticed.
+TEST(dictionaryErrors, foamFileHeaderFormat)
+{
+    const std::string bogus =
+        "FoamFile\n{\n    version 2.0;\n    format bogus;\n}\na 1;\n";
+    const auto err =
+        catchFatal([&]{ dictionary::fromString(bogus, caseFile); });
+    expectError(err, caseFile, 4, {"Keyword 'format': unknown value 'bogus'",
+                                   "Valid values are: (ascii binary)"});
+    EXPECT_EQ(err.keyword(), "format");
+
+    // In an #include'd file too, although its header is dropped.
+    scratchDir dir("dictHeaderFormat");
+    dir.write("params", "FoamFile { format asci; }\nH 0.2;\n");
+    const auto main = dir.write("main", "#include \"params\"\nL $H;\n");
+    expectError(catchFatal([&]{ dictionary::fromFile(main); }),
+                (dir.path()/"params").string(), 1,
+                {"unknown value 'asci'", "Did you mean 'ascii'?"});
+
+    // ascii, binary (also quoted) and no format at all are fine.
+    for (const std::string format :
+             {"format ascii;", "format binary;", "format \"binary\";", ""})
+    {
+        const auto d = dictionary::fromString
+        (
+            "FoamFile { version 2.0; " + format + " class dictionary; }\n"
+            "a 1;\n"
+        );
+        ASSERT_NE(d.header(), nullptr) << format;
+        EXPECT_EQ(d.keys(), std::vector<std::string>{"a"}) << format;
+    }
+}
+
+
+// A runaway keyword or token is quoted by its start and its length, not
+// in full; short ones are quoted as they are (the tables above).
+TEST(dictionaryErrors, longTextClippedInMessages)
+{
+    const std::string longKey(1 << 20, 'k');
+    const auto err = catchFatal([&]
+    {
+        dictionary::fromString("a 1;\n" + longKey + " 2;\n", caseFile)
+            .checkKeywords({"a"});
+    });
+    expectError(err, caseFile, 2, {"Unknown keyword '"
+        + std::string(80, 'k') + "... (1048576 characters)'"});
+    EXPECT_LT(err.report().size(), 1000u) << err.report().substr(0, 1000);
+
+    // Looked up, the long keyword is listed clipped too.
+    const auto d = dictionary::fromString("a 1;\n" + longKey + " 2;\n"
+        + "w " + std::string(100000, 'w') + ";\n", caseFile);
+    const auto missing = catchFatal([&]{ d.get<double>("b"); });
+    expectError(missing, caseFile, 0, {"Keywords present: (a "
+        + std::string(80, 'k') + "... (1048576 characters) w)"});
+    EXPECT_LT(missing.report().size(), 1000u);
+
+    // A long token where a number is expected.
+    const auto word = catchFatal([&]{ d.get<double>("w"); });
+    expectError(word, caseFile, 3, {"Keyword 'w'", "expected a number",
+        "found word '" + std::string(80, 'w') + "... (100000 characters)'"});
+    EXPECT_LT(word.report().size(), 1000u);
+
+    // A long bad token found by the lexer.
+    std::string number = "1";
+    for (int i = 0; i < 50000; ++i)
+    {
+        number += ".1";
+    }
+    const auto bad = catchFatal([&]
+    {
+        dictionary::fromString("a " + number + ";\n", caseFile);
+    });
+    expectError(bad, caseFile, 1,
+                {"Bad number '" + number.substr(0, 80) + "... (100001 "
+                 "characters)'"});
+    EXPECT_LT(bad.report().size(), 1000u);
+
+    // A long file name, and the paths made of it.
+    const std::string name(100000, 'f');
+    const auto include = catchFatal([&]
+    {
+        dictionary::fromString("#include \"" + name + "\"\n", caseFile);
+    });
+    expectError(include, caseFile, 1, {"Cannot find #include file \""
+        + name.substr(0, 80) + "... (100000 characters)\"",
+        "/home/user/run/damBreak/system/ffff", "(100031 characters)"});
+    EXPECT_LT(include.report().size(), 2000u);
+
+    // Multi-byte UTF-8 characters are not cut in half, and are counted
+    // as characters.
+    std::string accents;
+    for (int i = 0; i < 100; ++i)
+    {
+        accents += "\xC3\xA9";   // e acute
+    }
+    const auto utf8 = catchFatal([&]
+    {
+        dictionary::fromString(accents + " 1;\n", caseFile)
+            .checkKeywords({"a"});
+    });
+    expectError(utf8, caseFile, 1, {"Unknown keyword '" + accents.substr(0, 80)
+        + "... (100 characters)'"});
+}
+
+
 // * * * * * * * * * * * * * * * * Includes * * * * * * * * * * * * * * * //
 
 TEST(dictionaryIncludeErrors, recursionIsCaught)
@@ -414,6 +520,43 @@ TEST(dictionaryIncludeErrors, includeEtcWithoutInstallation)
     }
     expectError(err, "f", 2, {"#includeEtc \"caseDicts/x\"",
                               "SPHVCPM_DIR is not set"});
+}
+
+
+// Something that is there but is not a file is named as such, not
+// reported missing.
+TEST(dictionaryIncludeErrors, notARegularFile)
+{
+    scratchDir dir("dictIncludeDirectory");
+    std::filesystem::create_directories(dir.path()/"params");
+    const auto main =
+        dir.write("main", "a 1;\n#include \"params\"\n");
+    const auto err = catchFatal([&]{ dictionary::fromFile(main); });
+    expectError(err, main.string(), 2, {"Cannot read #include file \""
+        + (dir.path()/"params").string() + "\": it is a directory"});
+    EXPECT_EQ(err.message().find("Cannot find"), std::string::npos)
+        << err.message();
+
+    const auto absolute = catchFatal([&]
+    {
+        dictionary::fromString("#include \"/tmp\"\n", caseFile);
+    });
+    expectError(absolute, caseFile, 1, {"\"/tmp\": it is a directory"});
+
+    const auto device = catchFatal([&]
+    {
+        dictionary::fromString("a 1;\n#include \"/dev/null\"\n", caseFile);
+    });
+    expectError(device, caseFile, 2, {"Cannot read #include file "
+        "\"/dev/null\": it is not a regular file"});
+
+    // Optional includes skip it, as OpenFOAM does.
+    const auto d = dictionary::fromString
+    (
+        "a 1;\n#includeIfPresent \"/tmp\"\n#sinclude \"/dev/null\"\n",
+        caseFile
+    );
+    EXPECT_EQ(d.keys(), std::vector<std::string>{"a"});
 }
 
 

@@ -546,6 +546,15 @@ std::vector<badCase> badCases()
          "   { shape cylinder; point1 (0.2 0.1 0); point2 (0.2 0.1 0);"
          " radius 0.05; operation subtract; }"), where::dict, "hole",
          {"point1 == point2", "no direction"}},
+        {"bodyNamedTwice", replaced(d, "    water\n", "    tank\n"),
+         where::dict, "    tank\n    {\n        type        fluid",
+         {"Body 'tank' is given twice in 'bodies' (first at line",
+          "Give each body its own name"}},
+        {"containerOnFluid", replaced(d, "type        fluid;",
+         "type        fluid;\n        container { min (2 0 0); max (3 1 0);"
+         " layers 1; }"), where::dict, "container { min (2 0 0)",
+         {"Keyword 'container': body 'water' is a fluid",
+          "for wall bodies"}},
         {"zeroLayers", replaced(d, "layers 3", "layers 0"), where::dict,
          "layers", {"at least one layer", "found 0"}},
         {"emptyBody", replaced(d, "min (0.5 0 0); max (0.52 0.2 0);",
@@ -779,6 +788,17 @@ TEST(particleGenerator, clampedSolid)
         readTimeDirectory(c.path(), "0");
     ASSERT_EQ(back.size(), 1u);
     EXPECT_EQ(back[0].labelField("clamped"), clamped);
+
+    // A clamp round the whole body holds it rigid: a warning, no error.
+    testCase all(gateDict("(0.05 0.4 0)", "(-1 -1 0)"), "",
+        "gate { rho 1100; E 12e6; nu 0.4; plane planeStress; }\n");
+    particleGenerator genAll(all.path());
+    testing::internal::CaptureStderr();
+    genAll.generate();
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(genAll.summaries().front().nClamped, 200);
+    EXPECT_NE(err.find("its clamp holds all of its 200 particles, so it"
+                       " cannot deform"), std::string::npos) << err;
 }
 
 

@@ -494,6 +494,9 @@ TEST(timeFunction, errors)
                 "select { case c; }\n", false, motion, 7,
                 {"select", "no row", "roll.csv"});
     expectFails(columns + "valueColumn roll_angle_deg;\n"
+                "select { }\n", false, motion, 7,
+                {"'select'", "is empty", "select { column text; }"});
+    expectFails(columns + "valueColumn roll_angle_deg;\n"
                 "select { kase a; }\n", false, motion, 7,
                 {"kase", "no column"});
     expectFails(columns + "valueColumn roll_angle_deg;\n"

@@ -13,6 +13,7 @@
 
 #include "cellList.H"
 #include "../testPrecision.H"
+#include "../testTools.H"
 #include "error.H"
 
 #include <gtest/gtest.h>
@@ -990,6 +991,15 @@ TEST(cellList, makeCellGridErrors)
     EXPECT_THROW(makeCellGrid(lo, hi, 1e-7, 1, 2), FatalError);
     EXPECT_THROW(makeCellGrid(lo, {100, 100, 100}, 0.01, 1, 3), FatalError);
     EXPECT_THROW(makeCellGrid(lo, {5000, 5000, 0}, 0.1, 1, 2), FatalError);
+    // A particle thrown far away: numbers as %g, not 300 digits, and where
+    // to look.
+    const FatalError far = test::catchFatal([&]
+    {
+        makeCellGrid(lo, {1e300, 1, 1}, 0.1, 1, 3);
+    });
+    test::expectMessage(far, {"cells in one direction (length 1e+300 m",
+                              "system/sphSchemes", "constant/motion"});
+    EXPECT_LT(far.message().size(), 600u);
     // Bounds that are inverted or not finite.
     EXPECT_THROW(makeCellGrid(hi, lo, 0.1, 1, 3), FatalError);
     EXPECT_THROW(makeCellGrid(lo, {NaN, 1, 1}, 0.1, 1, 3), FatalError);
