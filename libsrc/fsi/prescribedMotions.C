@@ -65,6 +65,10 @@ prescribedMotions::prescribedMotions
         for (const std::string& b : m.bodies) log << " " << b;
         log << "\n";
     }
+    if (nDimensions == 2)
+    {
+        set_.restrictToPlane();
+    }
     for (const particleBody& b : bodies)
     {
         byBody_.push_back(set_.motionOf(b.name()));

@@ -113,7 +113,7 @@ void particleGenerator::readBody
             " a body is a sub-dictionary with a plain name, e.g. " + name
             + " { type fluid; shapes { ... } }");
     }
-    if (e.mergedLine() > 0)
+    if (e.mergedLine() > 0 && e.mergedFile() == e.file())
     {
         // Read as OpenFOAM reads it, the second would merge into the first:
         // a wall's container and a fluid's shapes became one body.
@@ -121,6 +121,16 @@ void particleGenerator::readBody
             + "' is given twice in 'bodies' (first at line "
             + std::to_string(e.line()) + "): the two would be read as one"
               " body. Give each body its own name", name);
+    }
+    if (e.mergedLine() > 0)
+    {
+        // Defaults from an #include'd file, completed or overridden here:
+        // OpenFOAM's way, but say what happened.
+        warning("Body '" + name + "' of " + e.file() + " line "
+            + std::to_string(e.line()) + " is given again here: its entries"
+              " are merged into it, the later ones replacing the earlier"
+              " (#inputMode overwrite replaces the whole body)",
+            e.mergedFile(), e.mergedLine());
     }
     const dictionary& dict = e.dict();
     dict.checkKeywords(bodyKeywords);

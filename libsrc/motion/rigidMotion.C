@@ -149,6 +149,19 @@ void rigidMotion::setRotation
 }
 
 
+void rigidMotion::restrictToPlane()
+{
+    origin_.z = 0;
+    axis_ = {0, 0, axis_.z < 0 ? scalar(-1) : scalar(1)};
+    direction_.z = 0;
+    const scalar d = mag(direction_);
+    if (d > 0)
+    {
+        direction_ = (1/d)*direction_;
+    }
+}
+
+
 rigidTransform rigidMotion::transform(const scalar t) const
 {
     rigidTransform T;

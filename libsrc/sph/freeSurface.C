@@ -453,7 +453,8 @@ private:
 
 template<class Kernel>
 freeSurface extract(const fluidSamples& s, const Kernel& kernel,
-                    const scalar spacing, const freeSurfaceSettings& settings)
+                    const scalar spacing, const int refine,
+                    const freeSurfaceSettings& settings)
 {
     freeSurface result;
     result.mesh.nodesPerCell = s.nDimensions;
@@ -500,9 +501,10 @@ freeSurface extract(const fluidSamples& s, const Kernel& kernel,
             + " nodes (spacing " + std::to_string(spacing) + " m over the"
               " fluid's bounds " + str(toVec3(lo)) + " to "
             + str(toVec3(hi)) + "), more than "
-            + std::to_string(settings.maxNodes) + ".\nUse a coarser grid"
-              " (-surfaceRefine 1), or look for fluid particles far from"
-              " the rest.");
+            + std::to_string(settings.maxNodes) + ".\n"
+            + (refine > 1 ? "Use a coarser grid"
+               " (-surfaceRefine 1), or look" : "Look")
+            + " for fluid particles far from the rest.");
     }
     result.nNodes = n[0]*n[1]*n[2];
 
@@ -616,10 +618,11 @@ freeSurface fluidFreeSurface(const std::vector<const particleBody*>& fluids,
     const scalar spacing = fluids.front()->dp()/refine;
     if (kernel == kernelType::wendlandC2)
     {
-        return extract(s, wendlandC2Kernel(h, nDimensions), spacing,
+        return extract(s, wendlandC2Kernel(h, nDimensions), spacing, refine,
                        settings);
     }
-    return extract(s, cubicSplineKernel(h, nDimensions), spacing, settings);
+    return extract(s, cubicSplineKernel(h, nDimensions), spacing, refine,
+                   settings);
 }
 
 } // End namespace sphvcpm

@@ -56,22 +56,20 @@ check "-surfaceRefine 4: twice the segments ($nSegments, $fine)" \
 # converted first.
 expectFatal()
 {
-    local what="$1" pattern="$2"; shift 2
-    local out="$scratch/log.error"
-    "$@" > "$out" 2>&1
-    check "$what: exit 1" [ $? -eq 1 ]
-    expectIn "$what: FATAL ERROR" "$out" "SPHVCPM FATAL ERROR"
-    expectIn "$what: message" "$out" "$pattern"
-    check "$what: nothing converted" [ -z "$(grep '^Time = ' "$out")" ]
+    expectFatalOf "$@"
+    check "$1: nothing converted" \
+        [ -z "$(grep '^Time = ' "$scratch/log.error")" ]
 }
 expectFatal "-surfaceLevel 1.5" "level 1\.5 is not in \(0, 1\)" \
     particlesToVTK -case "$run" -surfaceLevel 1.5
 expectFatal "-surfaceLevel x" "Option -surfaceLevel expects a number, not 'x'" \
     particlesToVTK -case "$run" -surfaceLevel x
-expectFatal "-surfaceRefine 0" "expects a whole number of at least 1, not '0'" \
+expectFatal "-surfaceRefine 0" "expects a whole number from 1 to 16, not '0'" \
     particlesToVTK -case "$run" -surfaceRefine 0
 expectFatal "-surfaceRefine 1.5" "Option -surfaceRefine expects a whole number" \
     particlesToVTK -case "$run" -surfaceRefine 1.5
+expectFatal "-surfaceRefine 4294967297" "from 1 to 16, not '4294967297'" \
+    particlesToVTK -case "$run" -surfaceRefine 4294967297
 cp -r "$run" "$scratch/clash"
 mv "$scratch/clash/0/tank" "$scratch/clash/0/freeSurface"
 out="$scratch/log.clash"

@@ -27,6 +27,19 @@ expectIn()
     fi
 }
 
+# expectFatalOf "what" pattern command...: the command exits 1 with the
+# FATAL ERROR block and pattern (grep -E) in its output, which stays in
+# $scratch/log.error for further checks.
+expectFatalOf()
+{
+    local what="$1" pattern="$2"; shift 2
+    local out="$scratch/log.error"
+    "$@" > "$out" 2>&1
+    check "$what: exit 1" [ $? -eq 1 ]
+    expectIn "$what: FATAL ERROR" "$out" "SPHVCPM FATAL ERROR"
+    expectIn "$what: message" "$out" "$pattern"
+}
+
 finish()
 {
     echo "$nPassed passed, $nFailed failed"

@@ -83,15 +83,7 @@ check "-fields '(rho)' keeps rho and id (got: $arrays)" \
     [ "$arrays" = "TimeValue rho id Points connectivity offsets " ]
 
 # Errors: the FATAL ERROR block, the culprit named, exit status 1.
-expectFatal()
-{
-    local what="$1" pattern="$2"; shift 2
-    local out="$scratch/log.error"
-    "$@" > "$out" 2>&1
-    check "$what: exit 1" [ $? -eq 1 ]
-    expectIn "$what: FATAL ERROR" "$out" "SPHVCPM FATAL ERROR"
-    expectIn "$what: message" "$out" "$pattern"
-}
+expectFatal() { expectFatalOf "$@"; }
 expectFatal "unknown field" "Field 'bogus' given by -fields" \
     particlesToVTK -case "$run" -fields '(rho bogus)'
 expectFatal "bad -time" "Invalid -time 'x'" \

@@ -802,6 +802,30 @@ TEST(particleGenerator, clampedSolid)
 }
 
 
+// Bodies from an #include'd file completed or overridden in the
+// dictionary (OpenFOAM's merge): allowed, with a warning naming both
+// places; within one file a repeated name is an error (badInput).
+TEST(particleGenerator, includedBodyOverridden)
+{
+    testCase c("nDimensions 2;\ndp 0.01;\nbodies\n{\n"
+        "    #include \"baseBodies\"\n"
+        "    water { shapes { column { max (0.2 0.1 0); } } }\n}\n");
+    writeText(c.path()/"system"/"baseBodies",
+        "water\n{\n    type fluid;\n    shapes { column { shape box;"
+        " min (0 0 0); max (0.1 0.1 0); } }\n}\n");
+    testing::internal::CaptureStderr();     // the bodies are read here
+    particleGenerator gen(c.path());
+    gen.generate();
+    const std::string err = testing::internal::GetCapturedStderr();
+    ASSERT_EQ(gen.bodies().size(), 1u);
+    EXPECT_EQ(gen.bodies().front().size(), 20*10);   // the override's box
+    EXPECT_NE(err.find("Body 'water' of " + (c.path()/"system"/"baseBodies")
+        .string() + " line 1 is given again here"), std::string::npos) << err;
+    EXPECT_NE(err.find("generateParticlesDict at line 6"), std::string::npos)
+        << err;
+}
+
+
 TEST(particleGenerator, thinSolidWarns)
 {
     // Surface correction on (the default): 3 layers at nu = 0.4 plane

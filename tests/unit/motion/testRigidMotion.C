@@ -194,6 +194,33 @@ TEST(rigidMotion, rotationWithTranslation)
 
 
 // A steady turn: the acceleration is centripetal, -omega^2 times the arm.
+// A 2D case's motion with its origin off the plane, or an axis a rounding
+// away from z: restricted to the plane, points of z = 0 stay at exactly 0
+// at every angle (R_zz = cos + (1 - cos) is not always exactly 1, which
+// once lifted a 2D rolling tank's particles off the plane).
+TEST(rigidMotion, restrictedToThePlane)
+{
+    for (const scalar angleDeg : {0.0, 61.0, 100.0, 137.0, 199.0, 271.0})
+    {
+        rigidMotion m({0.3045, 0, 0.005}, {1e-13, 0, 1},
+                      timeFunction(angleDeg*pi/180));
+        m.setTranslation({1, 2, 1e-14}, timeFunction(0.25));
+        m.restrictToPlane();
+        EXPECT_EQ(m.origin().z, 0);
+        EXPECT_EQ(m.axis().x, 0);
+        EXPECT_EQ(m.axis().z, 1);
+        EXPECT_EQ(m.direction().z, 0);
+        const rigidTransform T = m.transform(0);
+        for (const point& p : randomPoints(20, 5))
+        {
+            const point X{p.x, p.y, 0};
+            EXPECT_EQ(T.apply(X).z, 0) << angleDeg;
+            EXPECT_EQ(T.velocityAt(X).z, 0) << angleDeg;
+        }
+    }
+}
+
+
 TEST(rigidMotion, steadyTurnIsCentripetal)
 {
     test::scratchDir dir("rmSteady");

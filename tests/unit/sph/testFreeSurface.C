@@ -315,6 +315,12 @@ TEST(freeSurface, noFluidAndBadSettings)
     expectMessage(catchFatal([&] { surfaceOf({&far}); }),
                   {"grid would have", "-surfaceRefine 1",
                    "fluid particles far from the rest"});
+    // Already the coarsest grid: only the far particles are named.
+    freeSurfaceSettings coarse;
+    coarse.refine = 1;
+    const FatalError err = catchFatal([&] { surfaceOf({&far}, coarse); });
+    expectMessage(err, {"Look for fluid particles far from the rest"});
+    EXPECT_EQ(err.message().find("-surfaceRefine"), std::string::npos);
     // No volume: named.
     particleBody empty = water;
     empty.scalarField("rho")[3] = 0;

@@ -14,6 +14,7 @@
 #include "timeSelection.H"
 #include "vtkCaseConverter.H"
 
+#include <algorithm>
 #include <iostream>
 
 using namespace sphvcpm;
@@ -69,12 +70,13 @@ int main(int argc, char* argv[])
             || args.found("surfaceLevel") || args.found("surfaceRefine");
         freeSurfaceSettings settings;
         settings.level = args.numberOption("surfaceLevel", settings.level);
-        settings.refine = int(args.integerOption("surfaceRefine",
-                                                 settings.refine));
-        if (args.found("surfaceRefine") && settings.refine < 1)
+        const long refine = args.integerOption("surfaceRefine",
+                                               settings.refine);
+        settings.refine = int(std::clamp(refine, 0L, 1000L));
+        if (args.found("surfaceRefine") && (refine < 1 || refine > 16))
         {
-            fatalError("Option -surfaceRefine expects a whole number of at"
-                " least 1, not '" + args.option("surfaceRefine") + "'");
+            fatalError("Option -surfaceRefine expects a whole number from 1"
+                " to 16, not '" + args.option("surfaceRefine") + "'");
         }
         checkFreeSurfaceSettings(settings);
         bool modelRead = false;
@@ -116,7 +118,7 @@ int main(int argc, char* argv[])
                 std::cout << "    freeSurface: " << fs.mesh.nCells()
                     << (planar ? " segments" : " triangles") << " -> "
                     << file.generic_string() << "\n";
-                if (fluids.empty())
+                if (fluids.empty() || !(fs.particleVolume > 0))
                 {
                     std::cout << "        no fluid particles\n";
                 }
