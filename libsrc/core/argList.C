@@ -1,10 +1,9 @@
 #include "argList.H"
 #include "error.H"
+#include "formatting.H"
 #include "foamFile.H"
 #include "version.H"
 
-#include <cctype>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -281,17 +280,13 @@ double argList::numberOption(const std::string& name, const double deflt)
     {
         return deflt;
     }
+    // Blanks around the value (a quoted '0.5 ') are allowed.
     const std::string text = option(name);
-    char* end = nullptr;
-    errno = 0;
-    const double value = std::strtod(text.c_str(), &end);
-    while (end && *end != '\0'
-        && std::isspace(static_cast<unsigned char>(*end)))
-    {
-        ++end;
-    }
-    if (text.empty() || end == text.c_str() || *end != '\0' || errno != 0
-     || !std::isfinite(value))
+    const std::size_t first = text.find_first_not_of(" \t");
+    const std::size_t last = text.find_last_not_of(" \t");
+    double value = 0;
+    if (first == std::string::npos
+     || !readNumber(text.substr(first, last - first + 1), value))
     {
         fatalError("Option -" + name + " expects a number, not '" + text
             + "'");

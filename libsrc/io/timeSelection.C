@@ -6,8 +6,8 @@
 #include "timeSelection.H"
 #include "argList.H"
 #include "error.H"
+#include "formatting.H"
 
-#include <charconv>
 #include <cmath>
 #include <limits>
 
@@ -20,20 +20,6 @@ namespace
 const char* const syntaxHelp =
     "Expected a time (0.1), a range (0:0.5, :0.5, 0.2: or :) or a comma-"
     "separated list of those, e.g. -time '0,0.2:0.4'";
-
-// The whole of s as a finite number; false otherwise.
-bool readNumber(const std::string& s, double& value)
-{
-    const char* first = s.data();
-    const char* last = s.data() + s.size();
-    if (first != last && *first == '+')
-    {
-        ++first;
-    }
-    const auto result = std::from_chars(first, last, value);
-    return first != last && result.ec == std::errc() && result.ptr == last
-        && std::isfinite(value);
-}
 
 bool isSpace(char c)
 {

@@ -139,7 +139,6 @@ std::vector<vtkCaseConverter::bodyOutput> vtkCaseConverter::convert(
 
         outputs.push_back({body.name(), body.size(), "VTK"/name});
         addToSeries(body.name());
-        bodyNames_[time.name].push_back(body.name());
     }
     if (bodies)
     {
@@ -152,7 +151,7 @@ std::vector<vtkCaseConverter::bodyOutput> vtkCaseConverter::convert(
 std::filesystem::path vtkCaseConverter::writeMesh(const std::string& name,
     const timeInstant& time, const vtpMesh& mesh)
 {
-    const auto& names = bodyNames_[time.name];
+    const std::vector<std::string> names = bodyNames(caseDir_, time.name);
     if (std::find(names.begin(), names.end(), name) != names.end())
     {
         fatalError("Time " + time.name + " of case " + caseDir_.string()
