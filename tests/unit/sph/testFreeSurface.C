@@ -125,6 +125,24 @@ void expectClosed(const vtpMesh& m)
     EXPECT_EQ(bad, 0u) << "edges not met once each way";
 }
 
+// Round about the origin (a disc or a ball): every point within half a
+// particle of the radius R of the particles' own disc or ball, 0.1 dp on
+// average, its normal of unit length and pointing outwards.
+void expectRound(const vtpMesh& m, const scalar R, const scalar dp)
+{
+    const auto& n = vectorField(m, "Normals");
+    double meanR = 0;
+    for (std::size_t v = 0; v < m.points.size(); ++v)
+    {
+        const point& x = m.points[v];
+        EXPECT_NEAR(mag(x), R, 0.5*dp);
+        EXPECT_GT(dot(n[v], toVec3(x))/mag(x), 0.9);
+        EXPECT_NEAR(mag(n[v]), 1, 10*roundRel);
+        meanR += mag(x)/m.points.size();
+    }
+    EXPECT_NEAR(meanR, R, 0.1*dp);
+}
+
 } // End anonymous namespace
 
 
@@ -187,17 +205,7 @@ TEST(freeSurface, disc2D)
     expectClosed(fs.mesh);
     EXPECT_NEAR(fs.enclosed, fs.particleVolume, 0.005*fs.particleVolume);
     // The radius of a disc of the particles' area.
-    const scalar Rlattice = std::sqrt(fs.particleVolume/M_PI);
-    const auto& n = vectorField(fs.mesh, "Normals");
-    double meanR = 0;
-    for (std::size_t v = 0; v < fs.mesh.points.size(); ++v)
-    {
-        const point& x = fs.mesh.points[v];
-        EXPECT_NEAR(mag(x), Rlattice, 0.5*dp);
-        EXPECT_GT(dot(n[v], toVec3(x))/mag(x), 0.9);
-        meanR += mag(x)/fs.mesh.points.size();
-    }
-    EXPECT_NEAR(meanR, Rlattice, 0.1*dp);
+    expectRound(fs.mesh, std::sqrt(fs.particleVolume/M_PI), dp);
     // Each segment's outward normal (q - p) x z points away from the
     // centre.
     for (std::size_t c = 0; c < fs.mesh.nCells(); ++c)
@@ -262,18 +270,7 @@ TEST(freeSurface, ball3D)
         {R, R, R}, [&](const point& x) { return mag(x) < R; });
     const freeSurface fs = surfaceOf({&water});
     expectClosed(fs.mesh);
-    const scalar Rlattice = std::cbrt(3*fs.particleVolume/(4*M_PI));
-    const auto& n = vectorField(fs.mesh, "Normals");
-    double meanR = 0;
-    for (std::size_t v = 0; v < fs.mesh.points.size(); ++v)
-    {
-        const point& x = fs.mesh.points[v];
-        EXPECT_NEAR(mag(x), Rlattice, 0.5*dp);
-        EXPECT_GT(dot(n[v], toVec3(x))/mag(x), 0.9);
-        EXPECT_NEAR(mag(n[v]), 1, 10*roundRel);
-        meanR += mag(x)/fs.mesh.points.size();
-    }
-    EXPECT_NEAR(meanR, Rlattice, 0.1*dp);
+    expectRound(fs.mesh, std::cbrt(3*fs.particleVolume/(4*M_PI)), dp);
     const auto& c = fs.mesh.connectivity;
     std::size_t outward = 0;
     for (std::size_t t = 0; t < fs.mesh.nCells(); ++t)
