@@ -14,7 +14,6 @@
 #include "timeSelection.H"
 #include "vtkCaseConverter.H"
 
-#include <algorithm>
 #include <iostream>
 
 using namespace sphvcpm;
@@ -72,12 +71,12 @@ int main(int argc, char* argv[])
         settings.level = args.numberOption("surfaceLevel", settings.level);
         const long refine = args.integerOption("surfaceRefine",
                                                settings.refine);
-        settings.refine = int(std::clamp(refine, 0L, 1000L));
         if (args.found("surfaceRefine") && (refine < 1 || refine > 16))
         {
             fatalError("Option -surfaceRefine expects a whole number from 1"
                 " to 16, not '" + args.option("surfaceRefine") + "'");
         }
+        settings.refine = int(refine);
         checkFreeSurfaceSettings(settings);
         bool modelRead = false;
         sphModel model;
