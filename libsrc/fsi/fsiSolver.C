@@ -2,6 +2,7 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 #include "fsiSolverSteps.H"
+#include "latticeMembers.H"
 #include "argList.H"
 #include "error.H"
 #include "fluidInteractions.H"
@@ -468,6 +469,10 @@ void fsiSolver::readStartTime()
     if (coupling_ && hasWalls_) coupling_->useContact();
     log_<< "    dp = " << dp << " m, " << nDim << "D, time = " << time_
         << "\n" << std::endl;
+    if (postProcessTime_.empty())
+    {
+        checkWallThickness(bodies);
+    }
     placeMovingWalls();
 }
 
@@ -523,6 +528,54 @@ void fsiSolver::placeMovingWalls()
             checkStartOverlap("Solid " + s.name, s.dp, std::move(placed),
                               moved);
         }
+    }
+}
+
+
+void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
+{
+    const scalar support = 2*model_.h;
+    std::size_t solid = 0;
+    for (const particleBody& body : bodies)
+    {
+        if (body.type() == bodyType::fluid) continue;
+        // A solid's reference lattice (a restart reads it deformed).
+        const bool isSolid = body.type() == bodyType::solid;
+        const std::vector<point>& x = isSolid
+          ? solids_->bodies()[solid++].solid->reference() : body.position();
+        // The layers that fill the support of fluid touching the body.
+        const label needed = label(std::ceil(support/body.dp() - 1e-6));
+        std::vector<vec3> points(x.size());
+        std::transform(x.begin(), x.end(), points.begin(),
+                       [](const point& p) { return toVec3(p); });
+        if (needed < 2 || points.empty() || !onOneLattice(points, body.dp()))
+        {
+            continue;   // a wall rotated by its motion, or not generated
+        }
+        const latticeMembers thin = findThinMembers(points, body.dp(),
+            model_.nDimensions, needed, true);
+        if (thin.thinnestLayers < 0) continue;
+        const std::string where = std::to_string(thin.thinnestLayers)
+            + " layers (" + str(thin.thinnestLayers*body.dp()) + " m) thick"
+            " near " + str(points[thin.where]) + ", thinner than the"
+            " kernel's support 2h = " + str(support) + " m (hOverDp "
+            + str(model_.hOverDp) + ")";
+        if (isSolid)
+        {
+            // A thin plate is what the solid is; its load converges with
+            // the fluid's resolution all the same (docs/fsi.md).
+            log_<< "    solid " << body.name() << ": " << where << ": fluid"
+                << " on both its sides interacts across it at this"
+                << " resolution\n";
+            continue;
+        }
+        warning("Wall '" + body.name() + "' has a member only " + where
+            + ": fluid beside it sees too little wall, so its wall pressure"
+            " is low and particles can pass through it (and fluid on both"
+            " sides of a thin wall interacts across it). Give it at least "
+            + std::to_string(needed) + " layers (layers "
+            + std::to_string(needed) + " of a container or surface), or"
+            " lower hOverDp", (caseDir_/"system/sphSchemes").string());
     }
 }
 

@@ -4,6 +4,7 @@
 #include "latticeMembers.H"
 #include "error.H"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -25,7 +26,29 @@ std::int64_t packed(const cell& c)
          | (((c[2] + offset) & mask) << 42);
 }
 
+// The cell of point p on the lattice through p0; false when p lies more
+// than dp/4 off that lattice's nodes.
+bool latticeCell(const vec3& p, const vec3& p0, const scalar dp, cell& c)
+{
+    bool onNode = true;
+    for (int a = 0; a < 3; ++a)
+    {
+        const scalar s = (p[a] - p0[a])/dp;
+        c[a] = std::llround(s);
+        onNode = onNode && std::abs(s - scalar(c[a])) <= 0.25;
+    }
+    return onNode;
+}
+
 } // End anonymous namespace
+
+
+bool onOneLattice(const std::vector<vec3>& points, const scalar dp)
+{
+    cell c;
+    return std::all_of(points.begin(), points.end(), [&](const vec3& p)
+        { return latticeCell(p, points.front(), dp, c); });
+}
 
 
 latticeMembers findThinMembers
@@ -33,7 +56,8 @@ latticeMembers findThinMembers
     const std::vector<vec3>& points,
     const scalar dp,
     const int nDimensions,
-    const label maxLayers
+    const label maxLayers,
+    const bool skipEdges
 )
 {
     latticeMembers result;
@@ -50,15 +74,10 @@ latticeMembers findThinMembers
     index.reserve(2*n);
     for (std::size_t p = 0; p < n; ++p)
     {
-        for (int a = 0; a < 3; ++a)
+        if (!latticeCell(points[p], points[0], dp, cells[p]))
         {
-            const scalar s = (points[p][a] - points[0][a])/dp;
-            cells[p][a] = std::llround(s);
-            if (std::abs(s - scalar(cells[p][a])) > 0.25)
-            {
-                fatalError("findThinMembers: the particles are not on one"
-                           " lattice of spacing dp");
-            }
+            fatalError("findThinMembers: the particles are not on one"
+                       " lattice of spacing dp");
         }
         index[packed(cells[p])] = label(p);
     }
@@ -70,8 +89,10 @@ latticeMembers findThinMembers
         return it == index.end() ? -1 : it->second;
     };
 
-    // Unbroken runs along each axis, counted from the run's first node.
+    // Unbroken runs along each axis, counted from the run's first node,
+    // and each node's place in its run (0 for the first).
     std::vector<std::array<label, 3>> run(n, {0, 0, 0});
+    std::vector<std::array<label, 3>> place(n, {0, 0, 0});
     for (int a = 0; a < nDimensions; ++a)
     {
         for (label p = 0; p < label(n); ++p)
@@ -85,9 +106,11 @@ latticeMembers findThinMembers
             {
                 ++length;
             }
+            label k = 0;
             for (label q = p; q >= 0; q = neighbour(q, a, +1))
             {
                 run[q][a] = length;
+                place[q][a] = k++;
             }
         }
     }
@@ -120,6 +143,17 @@ latticeMembers findThinMembers
         const label thickness = run[p][shortAxis];
         if (thickness >= maxLayers
          || (result.thinnestLayers >= 0 && thickness >= result.thinnestLayers))
+        {
+            continue;
+        }
+        bool nearEdge = false;
+        for (int b = 0; b < nDimensions && skipEdges; ++b)
+        {
+            nearEdge = nearEdge || (b != shortAxis
+             && std::min(place[p][b], run[p][b] - 1 - place[p][b])
+                < thickness);
+        }
+        if (nearEdge)
         {
             continue;
         }

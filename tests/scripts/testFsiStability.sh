@@ -110,6 +110,20 @@ makeCase softPlate 1e6 0.49 1000 0.04 0.2 no
 checkCase softPlate 0.2
 makeCase thinPlate 1e7 0.3 1000 0.03 0.15 no
 checkCase thinPlate 0.15
+# 3 layers of dp fill the support 2h = 3 dp; under h = 2 dp (support 4 dp)
+# the log says that fluid on both sides of the plate interacts across it.
+check "thinPlate: no note of a solid thinner than the support" \
+    bash -c "! grep -q 'interacts across it' '$scratch/thinPlate/log.sphVcpmFsi'"
+makeCase widePlate 1e7 0.3 1000 0.03 0.15 no
+sed -i 's/hOverDp 1.5;/hOverDp 2;/' "$scratch/widePlate/system/sphSchemes"
+sed -i "s/layers 3;/layers 4;/" "$scratch/widePlate/system/generateParticlesDict"
+sed -i 's/^endTime 1;/endTime 0.001;/' "$scratch/widePlate/system/controlDict"
+(cd "$scratch/widePlate" && generateParticles > log.generateParticles 2>&1 \
+     && sphVcpmFsi > log.sphVcpmFsi 2>&1)
+expectIn "widePlate (h = 2 dp): the log notes the plate is thinner than the support" \
+    "$scratch/widePlate/log.sphVcpmFsi" \
+    "solid plate: 3 layers \\(0.03 m\\) thick .* support 2h = 0.04 m .* interacts across it"
+check "widePlate: a note, not a warning" bash -c "! grep -q 'Warning' '$scratch/widePlate/log.sphVcpmFsi'"
 makeCase fastJet 1e7 0.3 1000 0.04 0.3 yes
 checkCase fastJet 0.3
 

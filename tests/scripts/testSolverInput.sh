@@ -133,6 +133,22 @@ fresh; echo "timeScheme verlet;" >> "$scratch/c/system/sphSchemes"
 (cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
 check "timeScheme verlet with the defaults: no warning" \
     bash -c "! grep -q 'Warning' '$scratch/c/log.solver'"
+# A wall thinner than the kernel's support: a warning naming the wall, its
+# thickness and the layers it needs; the run goes on.
+fresh; sed -i 's/layers 3;/layers 2;/' "$scratch/c/system/generateParticlesDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+check "a wall of 2 layers: the run ends" grep -q '^End' "$scratch/c/log.solver"
+expectIn "a wall of 2 layers: warned, with the layers it needs" "$scratch/c/log.solver" \
+    "Wall 'box' has a member only 2 layers \(0.02 m\) thick .* support 2h = 0.03 m .* at least 3 layers"
+fresh; sed -i 's/^hOverDp .*/hOverDp 2;/' "$scratch/c/system/sphSchemes"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+expectIn "hOverDp 2 with walls of 3 layers: warned" "$scratch/c/log.solver" \
+    "Wall 'box' has a member only 3 layers .* support 2h = 0.04 m \(hOverDp 2\).* at least 4 layers"
+fresh; sed -i 's/^hOverDp .*/hOverDp 1.3;/' "$scratch/c/system/sphSchemes"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+check "hOverDp 1.3 with walls of 3 layers: no warning about the walls" \
+    bash -c "! grep -q 'has a member only' '$scratch/c/log.solver'"
+
 fresh; sed -i 's/^shifting .*/shifting { type fickian; }/' "$scratch/c/system/sphSchemes"
 echo "timeScheme verlet;" >> "$scratch/c/system/sphSchemes"
 expectFatal "Verlet with shifting" "use timeScheme symplectic with shifting" "sphSchemes"

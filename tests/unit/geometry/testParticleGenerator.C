@@ -916,3 +916,43 @@ TEST(latticeMembers, thickness)
     for (const vec3& p : block(20, 3)) scaled.push_back({0.01*p.x + 0.3, 0.01*p.y, 0});
     EXPECT_EQ(findThinMembers(scaled, 0.01, 2, 100).thinnestLayers, 3);
 }
+
+
+TEST(latticeMembers, edgeMargin)
+{
+    // A wall 3 thick in y whose top edge (z = 12) thins to 2 along all x,
+    // as the rounded rim of an open surface's layers does.
+    std::vector<vec3> wall;
+    for (label i = 0; i < 12; ++i)
+        for (label k = 0; k < 12; ++k)
+            for (label j = 0; j < 3; ++j)
+                wall.push_back({scalar(i), scalar(j), scalar(k)});
+    for (label i = 0; i < 12; ++i)
+        for (label j = 1; j < 3; ++j)
+            wall.push_back({scalar(i), scalar(j), 12});
+    EXPECT_EQ(findThinMembers(wall, 1, 3, 100).thinnestLayers, 2);
+    // Away from the edges the wall is 3 thick.
+    EXPECT_EQ(findThinMembers(wall, 1, 3, 100, true).thinnestLayers, 3);
+    EXPECT_EQ(findThinMembers(wall, 1, 3, 3, true).thinnestLayers, -1);
+    // A thin member is still found away from its ends, even a narrow one.
+    EXPECT_EQ(findThinMembers(block(30, 2), 1, 2, 3, true).thinnestLayers, 2);
+    EXPECT_EQ(findThinMembers(block(6, 2), 1, 2, 3, true).thinnestLayers, 2);
+}
+
+
+TEST(latticeMembers, onOneLattice)
+{
+    std::vector<vec3> scaled, turned;
+    for (const vec3& p : block(20, 3))
+    {
+        scaled.push_back({0.01*p.x + 0.3, 0.01*p.y - 0.002, 0});
+        // Turned by 10 degrees about the first point: off the lattice.
+        const scalar c = std::cos(0.1745), s = std::sin(0.1745);
+        turned.push_back({0.01*(c*p.x - s*p.y), 0.01*(s*p.x + c*p.y), 0});
+    }
+    EXPECT_TRUE(onOneLattice(scaled, 0.01));
+    EXPECT_FALSE(onOneLattice(turned, 0.01));
+    EXPECT_FALSE(onOneLattice(scaled, 0.013));
+    scaled[5].x = std::nan("");
+    EXPECT_FALSE(onOneLattice(scaled, 0.01));
+}
