@@ -121,7 +121,13 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
                                  + str(boundaryContact::kappa)
                                  + " (dp + dp_b)/2"
                                : std::string("off")) << "\n"
-        << "    time scheme " << timeSchemeName(model_.timeScheme)
+        << "    damping zones"
+        << (dampingLog_.empty() ? " none" : ":") << "\n";
+    for (const std::string& line : dampingLog_)
+    {
+        log_<< "        " << line << "\n";
+    }
+    log_<< "    time scheme " << timeSchemeName(model_.timeScheme)
         << (model_.timeScheme == timeSchemeType::verlet
             ? " (one force pass a step; an Euler step every "
               + std::to_string(model_.verletSteps) + " steps and after"
@@ -348,6 +354,7 @@ void fsiSolver::readStartTime()
     }
 
     model_ = readSphModel(caseDir_, nDim, dp);
+    model_.damping = readDampingZones(caseDir_, nDim, &dampingLog_);
 
     particles_.resize(nTotal, model_.sps,
                       model_.shifting != shiftingType::none,

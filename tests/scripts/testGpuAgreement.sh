@@ -1,7 +1,7 @@
 #!/bin/bash
-# CPU and GPU agree: the coarse 2D dam break, the 3D dam break tutorial and
-# the 2D and 3D elastic gates (the 2D cases with both time schemes) run a
-# short time with -device cpu and -device cuda,
+# CPU and GPU agree: the coarse 2D dam break (also with a damping zone), the
+# 3D dam break tutorial and the 2D and 3D elastic gates (the 2D cases with
+# both time schemes) run a short time with -device cpu and -device cuda,
 # and their fields and function-object histories are compared. The two
 # sum a particle's neighbours in another order (each pair once on the
 # host, per particle on the GPU; cells of h and of 2h/3 by default), so
@@ -94,6 +94,17 @@ expectIn "damBreak2DVerlet: the GPU ran the Verlet scheme" \
     "$scratch/damBreak2DVerlet.cuda/log.sphVcpmFsi" 'time scheme verlet'
 compareFields damBreak2DVerlet 0.1 position 1e-7 U 1e-5 rho 1e-3 p 1e-1
 compareHistory damBreak2DVerlet energy/0/energy.dat 1e-6
+
+# With a damping zone over the right half of the tank, both time schemes.
+cp -r "$SPHVCPM_DIR/tests/data/cases/damBreakSmall2D" "$scratch/damped"
+echo "beach { start (0.1 0 0); end (0.4 0 0); rate 20; }" > "$scratch/damped/constant/dampingZones"
+for scheme in symplectic verlet; do
+    runBoth damped2D$scheme "$scratch/damped" 0.1 $scheme
+    expectIn "damped2D$scheme: the GPU read the zone" \
+        "$scratch/damped2D$scheme.cuda/log.sphVcpmFsi" 'beach: from'
+    compareFields damped2D$scheme 0.1 position 1e-7 U 1e-5 rho 1e-3 p 1e-1
+    compareHistory damped2D$scheme energy/0/energy.dat 1e-6
+done
 
 # 3D dam break tutorial (about 170,000 particles): 0.02 s.
 runBoth damBreak3D "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreak3D" 0.02

@@ -149,6 +149,19 @@ fresh; sed -i 's/^hOverDp .*/hOverDp 1.3;/' "$scratch/c/system/sphSchemes"
 check "hOverDp 1.3 with walls of 3 layers: no warning about the walls" \
     bash -c "! grep -q 'has a member only' '$scratch/c/log.solver'"
 
+# Damping zones: logged when read; a bad one is an error naming the file.
+fresh; echo "beach { start (0.5 0 0); end (0.8 0 0); rate 20; }" > "$scratch/c/constant/dampingZones"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+check "a damping zone: the run ends" grep -q '^End' "$scratch/c/log.solver"
+expectIn "a damping zone: logged" "$scratch/c/log.solver" \
+    "beach: from \(0.5 0 0\) to \(0.8 0 0\), rate 20 1/s"
+echo "beach { start (0.5 0 0); end (0.5 0 0); rate 20; }" > "$scratch/c/constant/dampingZones"
+expectFatal "a damping zone of no length" "constant/dampingZones" \
+    "end \(0.5 0 0\) must differ from start"
+echo "beach { start (0.5 0 0); end (0.8 0 0); rate 0; }" > "$scratch/c/constant/dampingZones"
+expectFatal "a damping zone of rate 0" "constant/dampingZones" \
+    "expected a relaxation rate > 0"
+
 fresh; sed -i 's/^shifting .*/shifting { type fickian; }/' "$scratch/c/system/sphSchemes"
 echo "timeScheme verlet;" >> "$scratch/c/system/sphSchemes"
 expectFatal "Verlet with shifting" "use timeScheme symplectic with shifting" "sphSchemes"
