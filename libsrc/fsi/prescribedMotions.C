@@ -64,6 +64,10 @@ prescribedMotions::prescribedMotions
             << (m.motion.translates() ? "translation" : "") << " of";
         for (const std::string& b : m.bodies) log << " " << b;
         log << "\n";
+        if (!m.motion.note().empty())
+        {
+            log << "        " << m.motion.note() << "\n";
+        }
     }
     if (nDimensions == 2)
     {

@@ -149,6 +149,20 @@ void rigidMotion::setRotation
 }
 
 
+std::string rigidMotion::note() const
+{
+    std::string n;
+    for (const auto* f : {&angle_, &offset_})
+    {
+        if (*f && !(*f)->note().empty())
+        {
+            n += (n.empty() ? "" : "; ") + (*f)->note();
+        }
+    }
+    return n;
+}
+
+
 void rigidMotion::restrictToPlane()
 {
     origin_.z = 0;

@@ -2,6 +2,7 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 #include "timeFunction.H"
+#include "waveTheory.H"
 
 #include "dictionary.H"
 #include "error.H"
@@ -110,18 +111,26 @@ timeFunction timeFunction::read
 )
 {
     timeFunction f;
-    const std::string type =
-        dict.getWord("type", {"constant", "sinusoid", "table"});
+    const std::string type = dict.getWord("type",
+        {"constant", "sinusoid", "pistonWave", "table"});
 
     std::vector<std::string> valid{"type"};
     if (type == "constant")
     {
         valid.insert(valid.end(), {"value"});
     }
-    else if (type == "sinusoid")
+    else if (type == "sinusoid" || type == "pistonWave")
     {
-        valid.insert(valid.end(), {"amplitude", "period", "frequency",
-                                   "phase", "startTime", "rampTime"});
+        valid.insert(valid.end(), {"period", "frequency", "phase",
+                                   "startTime", "rampTime"});
+        if (type == "sinusoid")
+        {
+            valid.push_back("amplitude");
+        }
+        else
+        {
+            valid.insert(valid.end(), {"waveHeight", "depth"});
+        }
     }
     else
     {
@@ -170,6 +179,16 @@ timeFunction timeFunction::read
     {
         f.readSinusoid(dict, scale, valueDims);
     }
+    else if (type == "pistonWave")
+    {
+        if (isAngle)
+        {
+            dict.fatalAt("type", "Dictionary \"" + dict.name() + "\": type"
+                " pistonWave is the offset of a translation (a piston"
+                " wavemaker), not an angle");
+        }
+        f.readPistonWave(dict, caseDir);
+    }
     else
     {
         f.readTable(dict, caseDir, scale);
@@ -179,11 +198,16 @@ timeFunction timeFunction::read
 
 
 void timeFunction::readSinusoid(const dictionary& dict, const scalar scale,
-                                const dimensionSet& valueDims)
+                                const dimensionSet& valueDims,
+                                const bool withAmplitude)
 {
     type_ = kind::sinusoid;
 
-    amplitude_ = scale*dict.getDimensioned<scalar>("amplitude", valueDims);
+    if (withAmplitude)
+    {
+        amplitude_ =
+            scale*dict.getDimensioned<scalar>("amplitude", valueDims);
+    }
 
     const bool hasPeriod = dict.found("period");
     const bool hasFrequency = dict.found("frequency");
@@ -228,6 +252,64 @@ void timeFunction::readSinusoid(const dictionary& dict, const scalar scale,
         dict.fatalAt("rampTime", "Keyword 'rampTime' in dictionary \""
             + dict.name() + "\": the ramp duration must be >= 0 (0: no"
               " ramp), found " + numberText(rampTime_));
+    }
+}
+
+
+void timeFunction::readPistonWave(const dictionary& dict,
+                                  const fs::path& caseDir)
+{
+    readSinusoid(dict, 1, dimensions::length(), false);
+    const scalar height =
+        dict.getDimensioned<scalar>("waveHeight", dimensions::length());
+    const scalar depth =
+        dict.getDimensioned<scalar>("depth", dimensions::length());
+    for (const auto& [key, v] : {std::pair<const char*, scalar>{"waveHeight",
+        height}, {"depth", depth}})
+    {
+        if (!(v > 0))
+        {
+            dict.fatalAt(key, "Keyword '" + std::string(key) + "' in"
+                " dictionary \"" + dict.name() + "\": must be positive,"
+                " found " + numberText(v));
+        }
+    }
+    // |g| as the solver will use it; it checks the file itself.
+    scalar g = 9.81;
+    if (fs::exists(caseDir/"constant/g"))
+    {
+        g = mag(dictionary::fromFile(caseDir/"constant/g").get<vec3>("value"));
+        if (!(g > 0))
+        {
+            dict.fatalAt("type", "Dictionary \"" + dict.name() + "\": a"
+                " pistonWave needs gravity, and constant/g gives none");
+        }
+    }
+    const scalar k = waveNumber(omega_, depth, g);
+    const scalar heightOverStroke = pistonHeightOverStroke(k*depth);
+    amplitude_ = height/(2*heightOverStroke);
+    const scalar wavelength = 2*pi/k;
+
+    std::ostringstream os;
+    os << "pistonWave of height " << height << " m, period " << 2*pi/omega_
+       << " s in depth " << depth << " m (|g| " << g << "): k = " << k
+       << " 1/m, wavelength " << wavelength << " m, kd = " << k*depth
+       << ", H/S = " << heightOverStroke << ", stroke " << 2*amplitude_
+       << " m, Ursell number H L^2/d^3 = "
+       << height*wavelength*wavelength/(depth*depth*depth);
+    note_ = os.str();
+
+    const scalar breaking = micheBreakingHeight(k, depth);
+    if (height > breaking)
+    {
+        const entry& e = dict.lookupEntry("waveHeight");
+        warning("Keyword 'waveHeight' in dictionary \"" + dict.name()
+            + "\": " + numberText(height) + " m is above the breaking"
+              " height " + numberText(breaking) + " m of a wave of period "
+            + numberText(2*pi/omega_) + " s in " + numberText(depth)
+            + " m of water (Miche: H/L = 0.142 tanh kd); the waves will"
+              " break, and linear theory does not give their height",
+            e.file(), e.line());
     }
 }
 

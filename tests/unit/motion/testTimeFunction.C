@@ -11,6 +11,7 @@
 #include "dictionary.H"
 #include "../testTools.H"
 #include "timeFunction.H"
+#include "waveTheory.H"
 
 #include "../testPrecision.H"
 
@@ -407,6 +408,82 @@ TEST(timeFunction, tableColumnsByNumber)
 }
 
 
+// Linear wave theory: the dispersion relation solved, its shallow- and
+// deep-water limits, and the piston's transfer function with its limits.
+TEST(waveTheory, dispersionAndPistonTransfer)
+{
+    const scalar g = 9.81;
+    for (const scalar d : {0.05, 0.25, 2.0, 50.0})
+    {
+        for (const scalar T : {0.5, 1.0, 3.0})
+        {
+            const scalar w = 2*pi/T, k = waveNumber(w, d, g);
+            EXPECT_NEAR(g*k*std::tanh(k*d)/(w*w), 1, 1e-12) << d << " " << T;
+        }
+    }
+    // Shallow water: k -> w/sqrt(g d), here kd = 0.032 and k is above it
+    // by (kd)^2/6 = 1.7e-4; deep: k -> w^2/g.
+    EXPECT_NEAR(waveNumber(2*pi/20, 0.1, g)*std::sqrt(g*0.1)/(2*pi/20),
+                1 + 1.68e-4, 1e-5);
+    EXPECT_NEAR(waveNumber(2*pi/0.5, 10, g)*g/std::pow(2*pi/0.5, 2), 1,
+                1e-12);
+    // The tutorial's wave: T = 1 s in 0.25 m.
+    const scalar k = waveNumber(2*pi, 0.25, g);
+    EXPECT_NEAR(k, 4.819, 5e-4);
+    EXPECT_NEAR(pistonHeightOverStroke(k*0.25), 1.1626, 1e-4);
+    // H/S -> kd in shallow water, 2 in deep water.
+    EXPECT_NEAR(pistonHeightOverStroke(1e-3)/1e-3, 1, 1e-6);
+    EXPECT_NEAR(pistonHeightOverStroke(20), 2, 1e-12);
+    // Miche: H/L = 0.142 in deep water.
+    EXPECT_NEAR(micheBreakingHeight(2*pi/1.5, 100), 0.142*1.5, 1e-12);
+}
+
+// A pistonWave is the sinusoid whose stroke gives the wave height asked
+// for, with |g| from constant/g.
+TEST(timeFunction, pistonWave)
+{
+    test::scratchDir dir("pistonWave");
+    const std::string body = "type pistonWave;\nwaveHeight 0.0349;\n"
+        "depth 0.25;\nperiod 1;\nrampTime 2;\n";
+    const timeFunction f = readFunction(dir, body, false);
+    const scalar k = waveNumber(2*pi, 0.25, 9.81);
+    const scalar amplitude = 0.0349/(2*pistonHeightOverStroke(k*0.25));
+    EXPECT_NEAR(amplitude, 0.015, 2e-5);
+    std::ostringstream a;
+    a.precision(17);
+    a << amplitude;
+    const timeFunction s = readFunction(dir, "type sinusoid;\namplitude "
+        + a.str() + ";\nperiod 1;\nrampTime 2;\n", false);
+    for (const scalar t : {0.0, 0.3, 1.7, 2.2, 5.05})
+    {
+        EXPECT_NEAR(f.value(t), s.value(t), 1e-9) << t;
+        EXPECT_NEAR(f.derivative(t), s.derivative(t), 1e-8) << t;
+    }
+    EXPECT_NE(f.note().find("stroke 0.03"), std::string::npos) << f.note();
+    EXPECT_NE(f.note().find("wavelength 1.30"), std::string::npos)
+        << f.note();
+    EXPECT_TRUE(s.note().empty());
+
+    // Weaker gravity: a longer wave, another stroke.
+    dir.write("constant/g", "dimensions [0 1 -2 0 0 0 0];\n"
+                            "value (0 0 -1.62);\n");
+    const timeFunction moon = readFunction(dir, body, false);
+    const scalar kMoon = waveNumber(2*pi, 0.25, 1.62);
+    EXPECT_NEAR(moon.value(3.25)/f.value(3.25),
+                pistonHeightOverStroke(k*0.25)
+               /pistonHeightOverStroke(kMoon*0.25), 1e-9);
+    std::filesystem::remove(dir.path()/"constant/g");
+
+    // Above Miche's breaking height: a warning naming the line.
+    testing::internal::CaptureStderr();
+    readFunction(dir, "type pistonWave;\nwaveHeight 0.2;\ndepth 0.25;\n"
+                      "period 1;\n", false);
+    const std::string warned = testing::internal::GetCapturedStderr();
+    EXPECT_NE(warned.find("above the breaking height"), std::string::npos)
+        << warned;
+    EXPECT_NE(warned.find("line 4"), std::string::npos) << warned;
+}
+
 TEST(timeFunction, errors)
 {
     test::scratchDir dir("tfErrors");
@@ -425,7 +502,7 @@ TEST(timeFunction, errors)
 
     // Unknown type; unknown keyword with a suggestion.
     expectFails("type spline;\n", false, motion, 3,
-                {"spline", "constant", "sinusoid", "table"});
+                {"spline", "constant", "sinusoid", "pistonWave", "table"});
     expectFails("type sinusoid;\namplitude 1;\npreiod 2;\n", false, motion,
                 5, {"Unknown keyword 'preiod'", "Did you mean 'period'"});
 
@@ -450,6 +527,19 @@ TEST(timeFunction, errors)
                 {"period", "frequency"});
     expectFails("type sinusoid;\namplitude 1;\nperiod 1;\nrampTime -0.5;\n",
                 false, motion, 6, {"rampTime", ">= 0", "-0.5"});
+
+    // pistonWave: positive height and depth, no amplitude, not an angle.
+    expectFails("type pistonWave;\nwaveHeight 0;\ndepth 1;\nperiod 1;\n",
+                false, motion, 4, {"waveHeight", "positive"});
+    expectFails("type pistonWave;\nwaveHeight 0.1;\nperiod 1;\n", false,
+                motion, 2, {"depth"});
+    expectFails("type pistonWave;\nwaveHeight 0.1;\ndepth -1;\nperiod 1;\n",
+                false, motion, 5, {"depth", "positive", "-1"});
+    expectFails("type pistonWave;\namplitude 0.1;\ndepth 1;\nperiod 1;\n",
+                false, motion, 4, {"Unknown keyword 'amplitude'"});
+    expectFails("type pistonWave;\nwaveHeight 0.1;\ndepth 1;\nperiod 1;\n"
+                "units degrees;\n", true, motion, 3,
+                {"pistonWave is the offset of a translation"});
 
     // Tables.
     expectFails("type table;\nfile \"constant/none.dat\";\n", false, motion,
