@@ -918,7 +918,7 @@ TEST(latticeMembers, thickness)
 }
 
 
-TEST(latticeMembers, edgeMargin)
+TEST(latticeMembers, skipEdges)
 {
     // A wall 3 thick in y whose top edge (z = 12) thins to 2 along all x,
     // as the rounded rim of an open surface's layers does.
