@@ -112,14 +112,24 @@ timeFunction timeFunction::read
 {
     timeFunction f;
     const std::string type = dict.getWord("type",
-        {"constant", "sinusoid", "pistonWave", "table"});
+        {"constant", "sinusoid", "pistonWave", "flapWave", "table"});
+    const bool wavemaker = type == "pistonWave" || type == "flapWave";
+    if (wavemaker && isAngle != (type == "flapWave"))
+    {
+        dict.fatalAt("type", "Dictionary \"" + dict.name() + "\": type "
+            + type + " is " + (isAngle
+            ? "the offset of a translation (a piston wavemaker), not an"
+              " angle; a flap is type flapWave"
+            : "the angle of a rotation (a flap hinged on the floor), not an"
+              " offset; a piston is type pistonWave"));
+    }
 
     std::vector<std::string> valid{"type"};
     if (type == "constant")
     {
         valid.insert(valid.end(), {"value"});
     }
-    else if (type == "sinusoid" || type == "pistonWave")
+    else if (type == "sinusoid" || wavemaker)
     {
         valid.insert(valid.end(), {"period", "frequency", "phase",
                                    "startTime", "rampTime"});
@@ -139,22 +149,24 @@ timeFunction timeFunction::read
     }
 
     // Degrees against radians is the classic silent error: an angle must
-    // say which, and nothing else may.
-    if (isAngle)
+    // say which, and nothing else may. A flapWave's angle is derived, in
+    // radians.
+    const bool takesUnits = isAngle && !wavemaker;
+    if (takesUnits)
     {
         valid.push_back("units");
     }
     else if (dict.found("units"))
     {
         dict.fatalAt("units", "Keyword 'units' in dictionary \""
-            + dict.name() + "\": only an angle takes units (degrees or"
-              " radians); this quantity is in SI units (metres for an"
-              " offset)");
+            + dict.name() + "\": only an angle given as a number takes"
+              " units (degrees or radians); this quantity is in SI units"
+              " (metres for an offset; a flapWave's angle is derived)");
     }
     dict.checkKeywords(valid);
 
     scalar scale = 1;
-    if (isAngle)
+    if (takesUnits)
     {
         if (!dict.found("units"))
         {
@@ -179,15 +191,9 @@ timeFunction timeFunction::read
     {
         f.readSinusoid(dict, scale, valueDims);
     }
-    else if (type == "pistonWave")
+    else if (wavemaker)
     {
-        if (isAngle)
-        {
-            dict.fatalAt("type", "Dictionary \"" + dict.name() + "\": type"
-                " pistonWave is the offset of a translation (a piston"
-                " wavemaker), not an angle");
-        }
-        f.readPistonWave(dict, caseDir);
+        f.readWavemaker(dict, caseDir, type == "flapWave");
     }
     else
     {
@@ -256,8 +262,8 @@ void timeFunction::readSinusoid(const dictionary& dict, const scalar scale,
 }
 
 
-void timeFunction::readPistonWave(const dictionary& dict,
-                                  const fs::path& caseDir)
+void timeFunction::readWavemaker(const dictionary& dict,
+                                 const fs::path& caseDir, const bool flap)
 {
     readSinusoid(dict, 1, dimensions::length(), false);
     const scalar height =
@@ -282,20 +288,30 @@ void timeFunction::readPistonWave(const dictionary& dict,
         if (!(g > 0))
         {
             dict.fatalAt("type", "Dictionary \"" + dict.name() + "\": a"
-                " pistonWave needs gravity, and constant/g gives none");
+                " wavemaker needs gravity, and constant/g gives none");
         }
     }
     const scalar k = waveNumber(omega_, depth, g);
-    const scalar heightOverStroke = pistonHeightOverStroke(k*depth);
-    amplitude_ = height/(2*heightOverStroke);
+    const scalar heightOverStroke = flap ? flapHeightOverStroke(k*depth)
+                                         : pistonHeightOverStroke(k*depth);
+    const scalar stroke = height/heightOverStroke;
+    // A flap's stroke is its travel at the still-water level, a depth
+    // above its hinge.
+    amplitude_ = flap ? std::atan(stroke/(2*depth)) : stroke/2;
     const scalar wavelength = 2*pi/k;
 
     std::ostringstream os;
-    os << "pistonWave of height " << height << " m, period " << 2*pi/omega_
-       << " s in depth " << depth << " m (|g| " << g << "): k = " << k
-       << " 1/m, wavelength " << wavelength << " m, kd = " << k*depth
-       << ", H/S = " << heightOverStroke << ", stroke " << 2*amplitude_
-       << " m, Ursell number H L^2/d^3 = "
+    os << (flap ? "flapWave" : "pistonWave") << " of height " << height
+       << " m, period " << 2*pi/omega_ << " s in depth " << depth
+       << " m (|g| " << g << "): k = " << k << " 1/m, wavelength "
+       << wavelength << " m, kd = " << k*depth << ", H/S = "
+       << heightOverStroke << ", stroke " << stroke << " m";
+    if (flap)
+    {
+        os << " at the still-water level (angle amplitude "
+           << amplitude_*180/pi << " degrees)";
+    }
+    os << ", Ursell number H L^2/d^3 = "
        << height*wavelength*wavelength/(depth*depth*depth);
     note_ = os.str();
 

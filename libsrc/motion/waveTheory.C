@@ -32,6 +32,13 @@ scalar pistonHeightOverStroke(const scalar kd)
 }
 
 
+scalar flapHeightOverStroke(const scalar kd)
+{
+    return 4*(std::sinh(kd)/kd)*(kd*std::sinh(kd) - std::cosh(kd) + 1)
+          /(std::sinh(2*kd) + 2*kd);
+}
+
+
 scalar micheBreakingHeight(const scalar k, const scalar depth)
 {
     const scalar pi = 3.14159265358979323846;

@@ -19,6 +19,9 @@ expectedCount()
         waveFlume2D/water)       echo $((400*25)) ;;
         waveFlume2D/flume)       echo $((438*54 - 430*50)) ;;      # 4 layers, open top
         waveFlume2D/paddle)      echo $((5*45)) ;;
+        waveFlumeFlap2D/water)   echo $((400*25)) ;;               # waveFlume2D's flume
+        waveFlumeFlap2D/flume)   echo $((438*54 - 430*50)) ;;
+        waveFlumeFlap2D/paddle)  echo $((5*45)) ;;
         damBreak3D/tank)         echo $((166*73*43 - 160*67*40)) ;;
         sluiceGate3D/water)      echo $((24*8*20)) ;;
         sluiceGate3D/gate)       echo $((6*16*56)) ;;                     # dp/2: 6 layers

@@ -434,6 +434,11 @@ TEST(waveTheory, dispersionAndPistonTransfer)
     // H/S -> kd in shallow water, 2 in deep water.
     EXPECT_NEAR(pistonHeightOverStroke(1e-3)/1e-3, 1, 1e-6);
     EXPECT_NEAR(pistonHeightOverStroke(20), 2, 1e-12);
+    // A flap hinged on the floor: H/S -> kd/2 in shallow water (half a
+    // piston's volume), 2 in deep water; 0.6427 for the tutorial's wave.
+    EXPECT_NEAR(flapHeightOverStroke(1e-3)/0.5e-3, 1, 1e-6);
+    EXPECT_NEAR(flapHeightOverStroke(40), 2*(1 - 1.0/40), 1e-12);
+    EXPECT_NEAR(flapHeightOverStroke(k*0.25), 0.6427, 1e-4);
     // Miche: H/L = 0.142 in deep water.
     EXPECT_NEAR(micheBreakingHeight(2*pi/1.5, 100), 0.142*1.5, 1e-12);
 }
@@ -484,6 +489,24 @@ TEST(timeFunction, pistonWave)
     EXPECT_NE(warned.find("line 4"), std::string::npos) << warned;
 }
 
+// A flapWave is the angle whose travel at the still-water level, a depth
+// above the hinge, is the flap's stroke for the wave asked for.
+TEST(timeFunction, flapWave)
+{
+    test::scratchDir dir("flapWave");
+    const timeFunction f = readFunction(dir, "type flapWave;\n"
+        "waveHeight 0.035;\ndepth 0.25;\nperiod 1;\n", true);
+    const scalar k = waveNumber(2*pi, 0.25, 9.81);
+    const scalar stroke = 0.035/flapHeightOverStroke(k*0.25);
+    EXPECT_NEAR(stroke, 0.0545, 1e-4);
+    // At a quarter period the sinusoid (no ramp) is at its amplitude.
+    EXPECT_NEAR(0.25*std::tan(f.value(0.25)), stroke/2, 1e-12);
+    EXPECT_NEAR(f.value(0.75), -f.value(0.25), 1e-12);
+    EXPECT_NE(f.note().find("flapWave of height 0.035"), std::string::npos)
+        << f.note();
+    EXPECT_NE(f.note().find("degrees"), std::string::npos) << f.note();
+}
+
 TEST(timeFunction, errors)
 {
     test::scratchDir dir("tfErrors");
@@ -502,7 +525,7 @@ TEST(timeFunction, errors)
 
     // Unknown type; unknown keyword with a suggestion.
     expectFails("type spline;\n", false, motion, 3,
-                {"spline", "constant", "sinusoid", "pistonWave", "table"});
+                {"spline", "constant", "sinusoid", "pistonWave", "flapWave", "table"});
     expectFails("type sinusoid;\namplitude 1;\npreiod 2;\n", false, motion,
                 5, {"Unknown keyword 'preiod'", "Did you mean 'period'"});
 
@@ -539,7 +562,14 @@ TEST(timeFunction, errors)
                 false, motion, 4, {"Unknown keyword 'amplitude'"});
     expectFails("type pistonWave;\nwaveHeight 0.1;\ndepth 1;\nperiod 1;\n"
                 "units degrees;\n", true, motion, 3,
-                {"pistonWave is the offset of a translation"});
+                {"pistonWave is the offset of a translation", "flapWave"});
+    // flapWave: an angle, derived in radians (no units).
+    expectFails("type flapWave;\nwaveHeight 0.1;\ndepth 1;\nperiod 1;\n",
+                false, motion, 3, {"flapWave is the angle of a rotation",
+                                   "pistonWave"});
+    expectFails("type flapWave;\nwaveHeight 0.1;\ndepth 1;\nperiod 1;\n"
+                "units degrees;\n", true, motion, 7,
+                {"a flapWave's angle is derived"});
 
     // Tables.
     expectFails("type table;\nfile \"constant/none.dat\";\n", false, motion,
