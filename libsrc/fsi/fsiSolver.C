@@ -96,6 +96,9 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
     }
     setDomain(chosen == "cuda");
 
+    std::vector<std::string> dampingLog;    // one line per zone
+    model_.damping = readDampingZones(caseDir_, model_.nDimensions,
+                                      &dampingLog);
     log_<< "Fluid model\n"
         << "    kernel " << kernelName(model_.kernel)
         << ", h = " << model_.hOverDp << " dp = " << model_.h << " m"
@@ -122,8 +125,8 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
                                  + " (dp + dp_b)/2"
                                : std::string("off")) << "\n"
         << "    damping zones"
-        << (dampingLog_.empty() ? " none" : ":") << "\n";
-    for (const std::string& line : dampingLog_)
+        << (dampingLog.empty() ? " none" : ":") << "\n";
+    for (const std::string& line : dampingLog)
     {
         log_<< "        " << line << "\n";
     }
@@ -354,7 +357,6 @@ void fsiSolver::readStartTime()
     }
 
     model_ = readSphModel(caseDir_, nDim, dp);
-    model_.damping = readDampingZones(caseDir_, nDim, &dampingLog_);
 
     particles_.resize(nTotal, model_.sps,
                       model_.shifting != shiftingType::none,
@@ -552,9 +554,7 @@ void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
           ? solids_->bodies()[solid++].solid->reference() : body.position();
         // The layers that fill the support of fluid touching the body.
         const label needed = label(std::ceil(support/body.dp() - 1e-6));
-        std::vector<vec3> points(x.size());
-        std::transform(x.begin(), x.end(), points.begin(),
-                       [](const point& p) { return toVec3(p); });
+        const std::vector<vec3> points = toVectors(x);
         if (needed < 2 || points.empty() || !onOneLattice(points, body.dp()))
         {
             continue;   // a wall rotated by its motion, or not generated
