@@ -71,13 +71,14 @@ int main(int argc, char* argv[])
         argList args("sphVcpmFsi",
             "Weakly compressible SPH for free-surface flow between rigid"
             " walls, coupled to elastic VCPM solids (or the solids alone)");
-        args.addNote("Reads system/{controlDict,sphSchemes},"
-            " constant/{fluidProperties,g} and the start time;\nwrites"
+        args.addNote("Reads system/{controlDict,sphSchemes}, constant/"
+            "{fluidProperties,solidProperties,g,motion,dampingZones}\n"
+            "(solidProperties with solids, motion and dampingZones where"
+            " present) and the start time;\nwrites"
             " <time>/<body>/{position,U,rho,p,mass,id} and"
             " postProcessing/<function>/<startTime>/.\nA case with solids"
-            " and no fluid runs the VCPM solids alone (constant/"
-            "solidProperties);\nit writes <time>/<solid>/{position,U,"
-            "displacement,stress*,vonMises,...}.");
+            " and no fluid runs the VCPM solids alone;\nit writes"
+            " <time>/<solid>/{position,U,displacement,stress*,vonMises,...}.");
         args.addOption("device", "cpu|cuda|auto",
             "where to run (overrides $SPHVCPM_DEVICE and controlDict's"
             " device)");
