@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 #include "solidOnlySolver.H"
 #include "argList.H"
+#include "dampingZones.H"
 #include "dictionary.H"
 #include "dimensionSet.H"
 #include "error.H"
@@ -81,6 +82,14 @@ solidOnlySolver::solidOnlySolver
             log_<< "    " << b.name() << " (" << bodyTypeName(b.type())
                 << "): ignored, no solid-wall contact yet\n";
         }
+    }
+    // Damping zones act on the fluid: here they are checked and named
+    // as unused, never silently ignored.
+    if (readDampingZones(caseDir_, nDim_).n > 0)
+    {
+        warning("constant/dampingZones: the case has no fluid, and damping"
+            " zones act on the fluid only: they are not used",
+            (caseDir_/"constant"/"dampingZones").string(), 0);
     }
     const vec3 g = readGravity(caseDir_, nDim_);
     solids_ = std::make_unique<solidBodySet>(caseDir_, startTimeName_, start,

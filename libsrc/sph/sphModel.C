@@ -127,7 +127,8 @@ vec3 readGravity(const std::filesystem::path& caseDir, const int nDimensions)
     dictionary dict = dictionary::fromFile(file);
     dict.setCaseDimensions(nDimensions);
     dict.checkKeywords({"dimensions", "value"});
-    const vec3 g = dict.get<vec3>("value");
+    const vec3 g = dict.getDimensioned<vec3>("value",
+                                             dimensions::acceleration());
     if (nDimensions == 2 && g.z != 0)
     {
         dict.fatalAt("value", "a 2D case lies in the x-y plane:"

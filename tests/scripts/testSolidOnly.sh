@@ -167,11 +167,22 @@ sphVcpmFsi -case "$f" -device gpu > "$scratch/log.badDevice" 2>&1
 check "-device gpu with solids alone: exit status 1" [ $? -eq 1 ]
 expectIn "-device gpu with solids alone: says what is expected" "$scratch/log.badDevice" \
     "device gpu: expected cpu, cuda or auto"
+# Damping zones act on the fluid: with solids alone bad ones are an error
+# and good ones are named as unused.
+printf 'beach { start (0.3 0 0); end (0.3 0 0); rate 10; }\n' > "$f/constant/dampingZones"
+sphVcpmFsi -case "$f" > "$scratch/log.damping" 2>&1
+check "a zone with end = start, solids alone: exit status 1" [ $? -eq 1 ]
+expectIn "a zone with end = start, solids alone: names the file" "$scratch/log.damping" \
+    "constant/dampingZones"
+printf 'beach { start (0.3 0 0); end (0.5 0 0); rate 10; }\n' > "$f/constant/dampingZones"
 sed -i 's/^stopAt .*/stopAt nextWrite;/' "$f/system/controlDict"
 sphVcpmFsi -case "$f" > "$scratch/log.nextWrite" 2>&1
 check "stopAt nextWrite with solids alone: exit 0" [ $? -eq 0 ]
 check "stopAt nextWrite with solids alone: stopped after writing 0.1" \
     [ "$(cd "$f" && ls -d 0*)" = "$(printf '0\n0.1')" ]
+expectIn "damping zones with solids alone: a warning that they are not used" \
+    "$scratch/log.nextWrite" "damping zones act on the fluid only: they are not used"
+rm "$f/constant/dampingZones"
 
 # Restarts of the solid alone get the fluid solver's checks: what an
 # interrupted write left is removed, a damaged time is refused.

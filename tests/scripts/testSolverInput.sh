@@ -291,6 +291,9 @@ expectFatal "gamma 0.5" "constant/fluidProperties" "the Tait exponent gamma must
 fresh; printf 'FoamFile { class uniformDimensionedVectorField; object g; }\ndimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81 1);\n' \
     > "$scratch/c/constant/g"
 expectFatal "gravity out of a 2D case's plane" "constant/g" "gravity must have z = 0"
+fresh; printf 'FoamFile { class uniformDimensionedVectorField; object g; }\nvalue [0 1 -1 0 0 0 0] (0 -9.81 0);\n' \
+    > "$scratch/c/constant/g"
+expectFatal "gravity of a speed's dimensions" "constant/g" "dimensions do not match: expected \\[0 1 -2 0 0 0 0\\]"
 fresh; sed -i 's/^ *front .*/&\n    p0 { type probes; fields (); probeLocations ((0.1 0.1 0)); }/' \
     "$scratch/c/system/controlDict"
 expectFatal "probes of no field" "system/controlDict" "Function object 'p0': fields is empty"
