@@ -1,13 +1,17 @@
 /*---------------------------------------------------------------------------*\
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
-// vcpmThinMembers [-relax] [-layers "2 4 8"] [-nu 0.3 -plane stress|strain]
-//                 [-surface on|off|both]
+// vcpmThinMembers [-relax] [-3d] [-layers "2 4 8"]
+//                 [-nu 0.3 -plane stress|strain] [-surface on|off|both]
+//
+// -3d: a simple-cubic beam of square section n x n (-plane is ignored),
+// against Timoshenko with E and Cowper's shear coefficient.
 //
 // -surface: the surface correction of bondList.H (default both: each case
 // without, then with; docs/vcpm.md "Surface correction"); with it the
-// surface shift gamma of the material is printed and "fit" is the
-// corrected model of thinMemberStiffnessError. BEAM_L=0.8 in the
+// surface shift gamma of an n-layer member is printed (the correction also
+// stiffens the bonds into the clamp: bondList.H, clamp roots) and "fit" is
+// the corrected model of thinMemberStiffnessError. BEAM_L=0.8 in the
 // environment makes the beam longer (L/H = 40) to separate the clamp root.
 //
 // Bending stiffness of the square VCPM lattice against the number of layers
@@ -131,31 +135,39 @@ int relax(vcpmSolid& s, std::vector<vec3>& u)
 }
 
 void run(const std::vector<int>& layers, const scalar nu,
-         const planeModel plane, const bool dynamic, const bool surface)
+         const planeModel plane, const bool dynamic, const bool surface,
+         const bool threeD)
 {
     std::printf("\nnu = %g, %s, %s, surface correction %s\n", nu,
-        plane == planeModel::planeStress ? "plane stress" : "plane strain",
+        threeD ? "3D, square section n x n"
+      : plane == planeModel::planeStress ? "plane stress" : "plane strain",
         dynamic ? "damped dynamic relaxation" : "static (CG)",
         surface ? "on" : "off");
-    if (surface)
-    {
-        const vcpmMaterial m(E, nu, rho, vcpmLattice::square2D, H/4, plane, 1);
-        std::printf("surface shift gamma = %.4f\n", surfaceShift(m));
-    }
-    std::printf("| n | particles | iterations | w_tip (m) | Timoshenko (m) "
-                "| error | EI_lattice/EI | fit | c | s |\n"
-                "|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| n | gamma | particles | iterations | w_tip (m) "
+                "| Timoshenko (m) | error | EI_lattice/EI | fit | c | s |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const int n : layers)
     {
         const scalar l0 = H/n;
         const label nL = label(std::lround(L/l0));
-        vcpmMaterial m(E, nu, rho, vcpmLattice::square2D, l0, plane, 1);
+        vcpmMaterial m(E, nu, rho, threeD ? vcpmLattice::simpleCubic3D
+                       : vcpmLattice::square2D, l0, plane, 1);
         m.surfaceCorrection = surface;
-        vcpmSolid s(m, cantileverLattice(nL, n, nClamp, l0));
-        for (label p = 0; p < s.size(); ++p)
+        std::vector<point> X = cantileverLattice(nL, n, nClamp, l0);
+        if (threeD)
         {
-            s.clamped[p] = s.reference()[p].x < 0;
+            // n copies across z: a beam of square section.
+            const std::vector<point> plane2D = X;
+            X.clear();
+            for (int k = 0; k < n; ++k)
+            for (const point& p : plane2D)
+            {
+                X.push_back({p.x, p.y, (k + 0.5 - 0.5*n)*l0});
+            }
         }
+        std::vector<std::uint8_t> clamps(X.size());
+        for (std::size_t p = 0; p < X.size(); ++p) clamps[p] = X[p].x < 0;
+        vcpmSolid s(m, X, clamps);
         const auto t0 = std::chrono::steady_clock::now();
         std::vector<vec3> u;
         const int it = dynamic ? relax(s, u) : solveStatic(s, u);
@@ -175,18 +187,25 @@ void run(const std::vector<int>& layers, const scalar nu,
         }
         w /= nTip;
 
-        const scalar Eb = plane == planeModel::planeStress
+        // 3D: a beam of square section, E itself, Cowper's shear
+        // coefficient 10 (1 + nu)/(12 + 11 nu); 2D: per unit depth.
+        const scalar Eb = threeD || plane == planeModel::planeStress
             ? E : E/(1 - nu*nu);
-        const scalar EI = Eb*H*H*H/12;
-        const scalar kGA = 5.0/6.0*E/(2*(1 + nu))*H;
-        const scalar q = -rho*g*H;
+        const scalar depth = threeD ? H : 1;
+        const scalar EI = Eb*depth*H*H*H/12;
+        const scalar kappa = threeD ? 10*(1 + nu)/(12 + 11*nu) : 5.0/6.0;
+        const scalar kGA = kappa*E/(2*(1 + nu))*depth*H;
+        const scalar q = -rho*g*depth*H;
         const scalar xTip = L - 0.5*l0;
         const scalar wB = cantileverDeflection(xTip, L, q, EI, 0);
         const scalar wT = cantileverDeflection(xTip, L, q, EI, kGA);
         const scalar ratio = wB/(w - (wT - wB));
         const scalar c = n*(1 - std::cbrt(ratio));
-        std::printf("| %d | %ld | %d | %.5e | %.5e | %+.2f %% | %.4f | %.4f | %.3f "
-                    "| %.1f |\n", n, long(s.size()), it, w, wT,
+        std::printf("| %d | %s | %ld | %d | %.5e | %.5e | %+.2f %% | %.4f "
+                    "| %.4f | %.3f | %.1f |\n", n,
+                    surface ? std::to_string(surfaceShift(m, n)).substr(0, 6)
+                              .c_str() : "-",
+                    long(s.size()), it, w, wT,
                     100*(w/wT - 1), ratio,
                     1 + thinMemberStiffnessError(n, nu, plane, surface), c, sec);
         std::fflush(stdout);
@@ -198,7 +217,7 @@ void run(const std::vector<int>& layers, const scalar nu,
 
 int main(int argc, char* argv[])
 {
-    bool dynamic = false;
+    bool dynamic = false, threeD = false;
     std::vector<bool> surfaces{false, true};
     std::vector<int> layers{2, 3, 4, 5, 6, 8, 10, 12, 16, 20};
     std::vector<std::pair<scalar, planeModel>> cases
@@ -210,10 +229,10 @@ int main(int argc, char* argv[])
     // A benchmark of the lattice, not of a case: no -case, no banner; bad
     // arguments are named, never taken for something else.
     const char* usage =
-        "usage: vcpmThinMembers [-relax] [-layers \"2 4 8\"]"
+        "usage: vcpmThinMembers [-relax] [-3d] [-layers \"2 4 8\"]"
         " [-nu NU [-plane stress|strain]]... [-surface on|off|both]\n"
         "Bending stiffness of the VCPM lattice against the number of layers"
-        " (docs/vcpm.md, \"Thin members\").\n";
+        " (docs/vcpm.md, \"Static cantilever and thin members\").\n";
     auto bad = [&](const std::string& what)
     {
         std::fprintf(stderr, "vcpmThinMembers: %s\n%s", what.c_str(), usage);
@@ -229,6 +248,7 @@ int main(int argc, char* argv[])
             return 0;
         }
         else if (a == "-relax") dynamic = true;
+        else if (a == "-3d") threeD = true;
         else if (a == "-surface" && hasValue)
         {
             const std::string v = argv[++i];
@@ -297,7 +317,10 @@ int main(int argc, char* argv[])
                 "%ld clamped columns\n", L, H, E, rho, g, long(nClamp));
     for (const auto& c : cases)
     {
-        for (const bool on : surfaces) run(layers, c.first, c.second, dynamic, on);
+        for (const bool on : surfaces)
+        {
+            run(layers, c.first, c.second, dynamic, on, threeD);
+        }
     }
     return 0;
 }

@@ -31,6 +31,26 @@ std::int64_t cellKey(const std::int64_t a, const std::int64_t b,
 bondList::bondList(const std::vector<point>& X, const scalar l0,
                    const bool surfaceCorrection, const scalar gamma)
 {
+    build(X, l0);
+    if (surfaceCorrection)
+    {
+        correctSurfaces(X, l0, [gamma](label) { return gamma; });
+    }
+}
+
+
+bondList::bondList(const std::vector<point>& X, const scalar l0,
+                   const std::function<scalar(label)>& gammaOfLayers,
+                   const std::vector<std::uint8_t>& clamped)
+{
+    build(X, l0);
+    correctSurfaces(X, l0, gammaOfLayers);
+    correctClampRoots(clamped);
+}
+
+
+void bondList::build(const std::vector<point>& X, const scalar l0)
+{
     const label n = label(X.size());
     const scalar cut1 = 1.01*l0;
     const scalar cut2 = 1.01*std::sqrt(2.0)*l0;
@@ -135,8 +155,12 @@ bondList::bondList(const std::vector<point>& X, const scalar l0,
 
     weight_.assign(2*std::size_t(nBonds()), 1);
     pairFactor_.assign(nBonds(), 1);
-    if (!surfaceCorrection) return;
+}
 
+
+void bondList::correctSurfaces(const std::vector<point>& X, const scalar l0,
+                               const std::function<scalar(label)>& gammaOf)
+{
     // The partner of p along reference offset d, or -1.
     const scalar tol2 = 1e-4*l0*l0;
     auto neighbour = [&](const label p, const vec3& d) -> label
@@ -186,6 +210,15 @@ bondList::bondList(const std::vector<point>& X, const scalar l0,
             }
         }
     }
+    // Layers of the member under surface particle p, counted along -m (up
+    // to maxShiftLayers: the shift hardly changes beyond).
+    auto layersUnder = [&](label p, const vec3& m)
+    {
+        label n = 1;
+        while (n < maxShiftLayers && (p = neighbour(p, -1.0*m)) >= 0) ++n;
+        return n;
+    };
+    std::vector<scalar> largestDecrement(nBonds(), 0);
     for (label k = 0; k < nBonds(); ++k)
     {
         if (layer_[k] != 0) continue;
@@ -195,18 +228,55 @@ bondList::bondList(const std::vector<point>& X, const scalar l0,
         {
             if (std::abs(dot(d, m)) > 0.01*l0*l0) continue;
             if (neighbour(i, m) >= 0 || neighbour(j, m) >= 0) continue;
+            // The shift of a strip as thick as the member here (the
+            // thinner side at a step).
+            const scalar gamma =
+                gammaOf(std::min(layersUnder(i, m), layersUnder(j, m)));
             pairFactor_[k] += gamma;
             const label i1 = neighbour(i, -1.0*m), j1 = neighbour(j, -1.0*m);
             const label k1 = i1 < 0 || j1 < 0 ? -1 : bondBetween(i1, j1);
-            if (k1 >= 0) pairFactor_[k1] -= gamma;
+            if (k1 >= 0)
+            {
+                pairFactor_[k1] -= gamma;
+                largestDecrement[k1] = std::max(largestDecrement[k1], gamma);
+            }
         }
     }
     // A member 2 or 3 layers thick, or an edge, takes the decrement from
     // several faces; more than one would leave the bond soft or negative
     // (a 3 x 3 x 3 block blew up). At most one is kept.
-    for (scalar& f : pairFactor_)
+    for (label k = 0; k < nBonds(); ++k)
     {
-        f = f < 1 - gamma ? 1 - gamma : f;
+        pairFactor_[k] = std::max(pairFactor_[k], 1 - largestDecrement[k]);
+    }
+}
+
+
+void bondList::correctClampRoots(const std::vector<std::uint8_t>& clamped)
+{
+    if (clamped.empty()) return;
+    if (label(clamped.size()) != nParticles())
+    {
+        throw FatalError("VCPM bond list: " + std::to_string(clamped.size())
+            + " clamp flags for " + std::to_string(nParticles())
+            + " particles", "", 0, "clamped");
+    }
+    // A bond from a clamped to a free particle is half inside the clamped
+    // particle's rigid cell: its free half takes the whole stretch, at
+    // twice the bond's strain. So the free end counts the stretch twice (in
+    // its stretch sum and pair energy), the clamped end not at all, and the
+    // pair stiffness doubles: under any strain of the free side the bond
+    // carries what a bulk bond does, and the clamp holds at the support's
+    // face instead of half a spacing inside it (docs/vcpm.md, Clamp roots).
+    for (label k = 0; k < nBonds(); ++k)
+    {
+        const bool a = clamped[first_[k]] != 0, b = clamped[second_[k]] != 0;
+        if (a == b) continue;
+        const std::size_t freeEnd = 2*std::size_t(k) + (a ? 1 : 0);
+        const std::size_t clampedEnd = 2*std::size_t(k) + (a ? 0 : 1);
+        weight_[freeEnd] *= 2;
+        weight_[clampedEnd] = 0;
+        pairFactor_[k] *= 2;
     }
 }
 

@@ -178,15 +178,12 @@ solidBodySet::solidBodySet
             }
         }
 
-        solidBody sb{b.name(), b.dp(), b.id(),
-                     std::make_unique<vcpmSolid>(mat, reference), 0};
-        vcpmSolid& s = *sb.solid;
-        s.position = b.position();
-        if (b.hasField("U")) s.velocity = b.vectorField("U");
         label nClamped = 0;
+        std::vector<std::uint8_t> clamps;
         if (b.hasField("clamped"))
         {
             const std::vector<label>& clamped = b.labelField("clamped");
+            clamps.assign(n, 0);
             for (label i = 0; i < n; ++i)
             {
                 if (clamped[i] != 0 && clamped[i] != 1)
@@ -197,10 +194,15 @@ solidBodySet::solidBodySet
                         + (caseDir/startTimeName/b.name()/"clamped").string()
                         + ": expected 0 (free) or 1 (clamped)");
                 }
-                s.clamped[i] = clamped[i] != 0;
-                nClamped += s.clamped[i];
+                clamps[i] = clamped[i] != 0;
+                nClamped += clamps[i];
             }
         }
+        solidBody sb{b.name(), b.dp(), b.id(),
+                     std::make_unique<vcpmSolid>(mat, reference, clamps), 0};
+        vcpmSolid& s = *sb.solid;
+        s.position = b.position();
+        if (b.hasField("U")) s.velocity = b.vectorField("U");
         s.gravity = g;
         s.damping = damping;
         s.latticeDamping = latticeDamping;

@@ -12,14 +12,30 @@ prints the mid-span deflection of the mid-thickness line on meshes refined
 twice, against Euler-Bernoulli and Timoshenko (shear factor 5/6).
 
     /usr/bin/python3 docs/validation/scripts/clampedPlateFE.py
+
+With -cantilever NU it solves instead the static cantilever of docs/vcpm.md
+(STATIC_CANTILEVER.md set A: L = 0.2 m, h = 0.02 m, E = 2 MPa, rho = 1000,
+own weight at g = 0.0981, plane strain with Poisson ratio NU, the left end
+section fully fixed) and prints the tip's centre deflection against
+Timoshenko: how much a fully fixed section, which cannot contract sideways,
+stiffens 2D elasticity against beam theory.
+
+    /usr/bin/python3 docs/validation/scripts/clampedPlateFE.py -cantilever 0.3
 (Debian: python3-numpy, python3-scipy.)
 """
+import sys
+
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-E, nu, rhoS, rhoF, g, H = 67.5e9, 0.34, 2700.0, 1000.0, 9.81, 2.0
-L, h = 1.0, 0.05
+cantilever = len(sys.argv) == 3 and sys.argv[1] == "-cantilever"
+if cantilever:
+    E, nu, rhoS, rhoF, g, H = 2e6, float(sys.argv[2]), 1000.0, 0.0, 0.0981, 0.0
+    L, h = 0.2, 0.02
+else:
+    E, nu, rhoS, rhoF, g, H = 67.5e9, 0.34, 2700.0, 1000.0, 9.81, 2.0
+    L, h = 1.0, 0.05
 
 
 def solve(nx, ny):
@@ -100,13 +116,25 @@ def solve(nx, ny):
                        np.concatenate(cols))), shape=(2*n, 2*n))
     fixed = np.zeros(2*n, dtype=bool)
     for j in range(gy):
-        for i in (0, gx - 1):
+        for i in ((0,) if cantilever else (0, gx - 1)):
             if index[i, j] >= 0:
                 fixed[2*index[i, j]] = fixed[2*index[i, j] + 1] = True
     free = ~fixed
     u = np.zeros(2*n)
     u[free] = spla.spsolve(K[free][:, free].tocsc(), f[free])
-    return u[2*index[nx, ny] + 1]
+    return u[2*index[2*nx if cantilever else nx, ny] + 1]
+
+
+if cantilever:
+    q = -rhoS*g*h
+    Ep, G = E/(1 - nu*nu), E/(2*(1 + nu))
+    wT = q*L**4/(8*Ep*h**3/12) + q*L*L/(2*(5/6)*G*h)
+    print(f"cantilever, plane strain, nu = {nu}: Timoshenko tip {wT:.6e} m")
+    for nx, ny in [(40, 4), (80, 8), (160, 16)]:
+        w = solve(nx, ny)
+        print(f"plane strain Q8 {nx} x {ny}: tip {w:.6e} m, {100*(w/wT - 1):+.3f} % against"
+              f" Timoshenko")
+    sys.exit(0)
 
 
 q = g*(rhoF*H + rhoS*h)
