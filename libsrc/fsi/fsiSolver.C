@@ -544,29 +544,19 @@ void fsiSolver::placeMovingWalls()
 void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
 {
     const scalar support = 2*model_.h;
-    std::size_t solid = 0;
-    for (const particleBody& body : bodies)
+    // The layers that fill the support of fluid touching a body of dp.
+    auto layersNeeded = [&](const scalar dp)
     {
-        if (body.type() == bodyType::fluid) continue;
-        // A solid's reference lattice (a restart reads it deformed).
-        const bool isSolid = body.type() == bodyType::solid;
-        const std::vector<point>& x = isSolid
-          ? solids_->bodies()[solid++].solid->reference() : body.position();
-        // The layers that fill the support of fluid touching the body.
-        const label needed = label(std::ceil(support/body.dp() - 1e-6));
-        const std::vector<vec3> points = toVectors(x);
-        if (needed < 2 || points.empty() || !onOneLattice(points, body.dp()))
-        {
-            continue;   // a wall rotated by its motion, or not generated
-        }
-        const latticeMembers thin = findThinMembers(points, body.dp(),
-            model_.nDimensions, needed, true);
-        if (thin.thinnestLayers < 0) continue;
+        return label(std::ceil(support/dp - 1e-6));
+    };
+    auto warnThin = [&](const particleBody& body, const latticeMembers& thin,
+                        const vec3& at, const bool isSolid)
+    {
+        const label needed = layersNeeded(body.dp());
         const std::string where = std::to_string(thin.thinnestLayers)
             + " layers (" + str(thin.thinnestLayers*body.dp()) + " m) thick"
-            " near " + str(points[thin.where]) + ", thinner than the"
-            " kernel's support 2h = " + str(support) + " m (hOverDp "
-            + str(model_.hOverDp) + ")";
+            " near " + str(at) + ", thinner than the kernel's support 2h = "
+            + str(support) + " m (hOverDp " + str(model_.hOverDp) + ")";
         if (isSolid)
         {
             // A thin plate is what the solid is; its load converges with
@@ -574,7 +564,7 @@ void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
             log_<< "    solid " << body.name() << ": " << where << ": fluid"
                 << " on both its sides interacts across it at this"
                 << " resolution\n";
-            continue;
+            return;
         }
         warning("Wall '" + body.name() + "' has a member only " + where
             + ": fluid beside it sees too little wall, so its wall pressure"
@@ -583,6 +573,95 @@ void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
             + std::to_string(needed) + " layers (layers "
             + std::to_string(needed) + " of a container or surface), or"
             " lower hOverDp", (caseDir_/"system/sphSchemes").string());
+    };
+    auto notMeasured = [&](const particleBody& body)
+    {
+        log_<< "    " << bodyTypeName(body.type()) << " " << body.name()
+            << ": not on one lattice (turned by its motion, or from"
+            << " elsewhere): its thickness is not measured\n";
+    };
+
+    // Walls that stay put and share a spacing are measured together: a
+    // wall resting on another (a beach on the floor) is as thick as both.
+    // A moving wall, and a solid, on its own.
+    std::vector<std::vector<std::size_t>> groups;
+    std::size_t solid = 0;
+    std::vector<std::size_t> solidIndex(bodies.size(), 0);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+    {
+        const particleBody& body = bodies[b];
+        if (body.type() == bodyType::solid) solidIndex[b] = solid++;
+        if (body.type() == bodyType::fluid || body.size() == 0
+         || layersNeeded(body.dp()) < 2)
+        {
+            continue;
+        }
+        const bool joins = body.type() == bodyType::wall && !motions_.of(b);
+        bool placed = false;
+        for (auto& g : groups)
+        {
+            const particleBody& first = bodies[g.front()];
+            if (joins && first.type() == bodyType::wall
+             && !motions_.of(g.front()) && first.dp() == body.dp())
+            {
+                g.push_back(b);
+                placed = true;
+                break;
+            }
+        }
+        if (!placed) groups.push_back({b});
+    }
+
+    for (const auto& g : groups)
+    {
+        std::vector<vec3> points;
+        std::vector<std::size_t> owner;
+        for (const std::size_t b : g)
+        {
+            const particleBody& body = bodies[b];
+            // A solid's reference lattice (a restart reads it deformed).
+            const std::vector<vec3> x = toVectors(
+                body.type() == bodyType::solid
+              ? solids_->bodies()[solidIndex[b]].solid->reference()
+              : body.position());
+            points.insert(points.end(), x.begin(), x.end());
+            owner.insert(owner.end(), x.size(), b);
+        }
+        const scalar dp = bodies[g.front()].dp();
+        if (!onOneLattice(points, dp))
+        {
+            // Each on its own (walls of one spacing on shifted lattices).
+            for (const std::size_t b : g)
+            {
+                const particleBody& body = bodies[b];
+                std::vector<vec3> own;
+                for (std::size_t i = 0; i < points.size(); ++i)
+                {
+                    if (owner[i] == b) own.push_back(points[i]);
+                }
+                if (!onOneLattice(own, dp))
+                {
+                    notMeasured(body);
+                    continue;
+                }
+                const latticeMembers thin = findThinMembers(own, dp,
+                    model_.nDimensions, layersNeeded(dp), true);
+                if (thin.thinnestLayers >= 0)
+                {
+                    warnThin(body, thin, own[thin.where],
+                             body.type() == bodyType::solid);
+                }
+            }
+            continue;
+        }
+        const latticeMembers thin = findThinMembers(points, dp,
+            model_.nDimensions, layersNeeded(dp), true);
+        if (thin.thinnestLayers >= 0)
+        {
+            const particleBody& body = bodies[owner[thin.where]];
+            warnThin(body, thin, points[thin.where],
+                     body.type() == bodyType::solid);
+        }
     }
 }
 

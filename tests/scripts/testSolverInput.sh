@@ -148,6 +148,20 @@ fresh; sed -i 's/^hOverDp .*/hOverDp 1.3;/' "$scratch/c/system/sphSchemes"
 (cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
 check "hOverDp 1.3 with walls of 3 layers: no warning about the walls" \
     bash -c "! grep -q 'has a member only' '$scratch/c/log.solver'"
+# Walls that stay put are measured together: a wedge lying on the floor,
+# thin at its toe, is no thin wall; a baffle one layer thick standing on
+# the floor still is.
+fresh; sed -i 's/^    water$/    ramp { type wall; shapes { w { shape polygon; points ((0.5 0) (0.8 0) (0.8 0.1)); } } }\n&/' \
+    "$scratch/c/system/generateParticlesDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+check "a wedge wall on the floor: the run ends" grep -q '^End' "$scratch/c/log.solver"
+check "a wedge wall on the floor: no warning about the walls" \
+    bash -c "! grep -q 'has a member only' '$scratch/c/log.solver'"
+fresh; sed -i 's/^    water$/    baffle { type wall; shapes { b { shape box; min (0.6 0 0); max (0.61 0.2 0); } } }\n&/' \
+    "$scratch/c/system/generateParticlesDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+expectIn "a baffle of 1 layer on the floor: warned" "$scratch/c/log.solver" \
+    "Wall 'baffle' has a member only 1 layers \\(0.01 m\\) thick"
 
 # Damping zones: logged when read; a bad one is an error naming the file.
 fresh; echo "beach { start (0.5 0 0); end (0.8 0 0); rate 20; }" > "$scratch/c/constant/dampingZones"
