@@ -291,10 +291,31 @@ void timeFunction::readWavemaker(const dictionary& dict,
                 " wavemaker needs gravity, and constant/g gives none");
         }
     }
+    // Numbers no wave has (w^2 d/g overflowing or underflowing, a stroke
+    // beyond the largest number) are errors, never a NaN or infinite
+    // paddle.
+    const std::string periodKey = dict.found("period") ? "period"
+                                                        : "frequency";
     const scalar k = waveNumber(omega_, depth, g);
+    if (!(k*depth > 0 && std::isfinite(k*depth)))
+    {
+        dict.fatalAt(periodKey, "Keyword '" + periodKey + "' in dictionary"
+            " \"" + dict.name() + "\": linear theory gives no wave of period "
+            + numberText(2*pi/omega_) + " s in " + numberText(depth)
+            + " m of water (|g| " + numberText(g) + "): kd = "
+            + numberText(k*depth) + " is not a positive finite number");
+    }
     const scalar heightOverStroke = flap ? flapHeightOverStroke(k*depth)
                                          : pistonHeightOverStroke(k*depth);
     const scalar stroke = height/heightOverStroke;
+    if (!(std::isfinite(stroke) && stroke > 0))
+    {
+        dict.fatalAt("waveHeight", "Keyword 'waveHeight' in dictionary \""
+            + dict.name() + "\": " + numberText(height) + " m needs a stroke"
+              " of " + numberText(height) + "/" + numberText(heightOverStroke)
+            + " m (H/S at kd = " + numberText(k*depth) + "), not a finite"
+              " number");
+    }
     // A flap's stroke is its travel at the still-water level, a depth
     // above its hinge.
     amplitude_ = flap ? std::atan(stroke/(2*depth)) : stroke/2;

@@ -4,38 +4,66 @@
 #include "waveTheory.H"
 
 #include <cmath>
+#include <limits>
 
 namespace sphvcpm
 {
 
-scalar waveNumber(const scalar omega, const scalar depth, const scalar g)
+namespace
 {
-    // g k tanh(kd) - w^2 increases with k; Newton from the deep-water k
-    // (below the root) takes a few steps.
-    scalar k = omega*omega/g;
-    for (int i = 0; i < 100; ++i)
+
+// x/sinh(x) for x >= 0, written as 2x e^{-x}/(1 - e^{-2x}) so that it tends
+// to 0 for large x without sinh overflowing (x > 710), and stays accurate
+// for small x (expm1).
+scalar xOverSinh(const scalar x)
+{
+    if (x == 0) return 1;
+    return 2*x*std::exp(-x)/(-std::expm1(-2*x));
+}
+
+} // End anonymous namespace
+
+
+scalar waveNumber(const scalar omega, const scalar depth, const scalar g,
+                  int* iterations)
+{
+    // In y = kd the relation is y tanh(y) = x, x = w^2 d/g. Newton from
+    // Eckart's approximation y = x/sqrt(tanh x) (within 5 % from shallow
+    // to deep water, exact in both limits) takes a few steps at any kd;
+    // from the deep-water y = x it took a dozen or more at small kd.
+    const scalar x = omega*omega*depth/g;
+    int steps = 0;
+    scalar y = x > 0 ? x/std::sqrt(std::tanh(x)) : 0;
+    while (x > 0 && std::isfinite(x) && steps < 50)
     {
-        const scalar th = std::tanh(k*depth);
-        const scalar f = g*k*th - omega*omega;
-        const scalar df = g*th + g*k*depth*(1 - th*th);
-        const scalar step = f/df;
-        k -= step;
-        if (std::abs(step) <= 1e-14*k) break;
+        const scalar th = std::tanh(y);
+        const scalar step = (y*th - x)/(th + y*(1 - th*th));
+        ++steps;
+        // A step to y <= 0 (a safeguard: Eckart's start is within 5 %) is
+        // a halving instead.
+        y = step < y ? y - step : y/2;
+        if (std::abs(step)
+         <= 4*std::numeric_limits<scalar>::epsilon()*y) break;
     }
-    return k;
+    if (iterations) *iterations = steps;
+    return y/depth;
 }
 
 
 scalar pistonHeightOverStroke(const scalar kd)
 {
-    return 2*(std::cosh(2*kd) - 1)/(std::sinh(2*kd) + 2*kd);
+    // 2 (cosh 2kd - 1)/(sinh 2kd + 2kd) divided through by sinh 2kd.
+    if (kd == 0) return 0;
+    return 2*std::tanh(kd)/(1 + xOverSinh(2*kd));
 }
 
 
 scalar flapHeightOverStroke(const scalar kd)
 {
-    return 4*(std::sinh(kd)/kd)*(kd*std::sinh(kd) - std::cosh(kd) + 1)
-          /(std::sinh(2*kd) + 2*kd);
+    // The piston's times (kd sinh kd - cosh kd + 1)/(kd sinh kd)
+    // = 1 - tanh(kd/2)/kd.
+    if (kd == 0) return 0;
+    return pistonHeightOverStroke(kd)*(1 - std::tanh(kd/2)/kd);
 }
 
 

@@ -408,41 +408,6 @@ TEST(timeFunction, tableColumnsByNumber)
 }
 
 
-// Linear wave theory: the dispersion relation solved, its shallow- and
-// deep-water limits, and the piston's transfer function with its limits.
-TEST(waveTheory, dispersionAndPistonTransfer)
-{
-    const scalar g = 9.81;
-    for (const scalar d : {0.05, 0.25, 2.0, 50.0})
-    {
-        for (const scalar T : {0.5, 1.0, 3.0})
-        {
-            const scalar w = 2*pi/T, k = waveNumber(w, d, g);
-            EXPECT_NEAR(g*k*std::tanh(k*d)/(w*w), 1, 1e-12) << d << " " << T;
-        }
-    }
-    // Shallow water: k -> w/sqrt(g d), here kd = 0.032 and k is above it
-    // by (kd)^2/6 = 1.7e-4; deep: k -> w^2/g.
-    EXPECT_NEAR(waveNumber(2*pi/20, 0.1, g)*std::sqrt(g*0.1)/(2*pi/20),
-                1 + 1.68e-4, 1e-5);
-    EXPECT_NEAR(waveNumber(2*pi/0.5, 10, g)*g/std::pow(2*pi/0.5, 2), 1,
-                1e-12);
-    // The tutorial's wave: T = 1 s in 0.25 m.
-    const scalar k = waveNumber(2*pi, 0.25, g);
-    EXPECT_NEAR(k, 4.819, 5e-4);
-    EXPECT_NEAR(pistonHeightOverStroke(k*0.25), 1.1626, 1e-4);
-    // H/S -> kd in shallow water, 2 in deep water.
-    EXPECT_NEAR(pistonHeightOverStroke(1e-3)/1e-3, 1, 1e-6);
-    EXPECT_NEAR(pistonHeightOverStroke(20), 2, 1e-12);
-    // A flap hinged on the floor: H/S -> kd/2 in shallow water (half a
-    // piston's volume), 2 in deep water; 0.6427 for the tutorial's wave.
-    EXPECT_NEAR(flapHeightOverStroke(1e-3)/0.5e-3, 1, 1e-6);
-    EXPECT_NEAR(flapHeightOverStroke(40), 2*(1 - 1.0/40), 1e-12);
-    EXPECT_NEAR(flapHeightOverStroke(k*0.25), 0.6427, 1e-4);
-    // Miche: H/L = 0.142 in deep water.
-    EXPECT_NEAR(micheBreakingHeight(2*pi/1.5, 100), 0.142*1.5, 1e-12);
-}
-
 // A pistonWave is the sinusoid whose stroke gives the wave height asked
 // for, with |g| from constant/g.
 TEST(timeFunction, pistonWave)
@@ -507,6 +472,53 @@ TEST(timeFunction, flapWave)
     EXPECT_NE(f.note().find("degrees"), std::string::npos) << f.note();
 }
 
+// Wavemakers in very deep and very shallow water: a finite paddle motion
+// of the right size at every kd (kd = 4000 made a NaN amplitude, which
+// the breaking check let through).
+TEST(timeFunction, wavemakersAtEveryDepth)
+{
+    test::scratchDir dir("wavemakerDepths");
+    const scalar g = 9.81, H = 0.001;
+    for (const scalar d : {0.01, 0.25, 10.0, 1000.0})
+    {
+        for (const scalar T : {0.1, 1.0, 100.0})
+        {
+            std::ostringstream body;
+            body.precision(17);
+            body << "waveHeight " << H << ";\ndepth " << d << ";\nperiod "
+                 << T << ";\n";
+            SCOPED_TRACE(body.str());
+            testing::internal::CaptureStderr();     // breaking warnings
+            const timeFunction piston = readFunction(dir,
+                "type pistonWave;\n" + body.str(), false);
+            const timeFunction flap = readFunction(dir,
+                "type flapWave;\n" + body.str(), true);
+            testing::internal::GetCapturedStderr();
+            const scalar kd = waveNumber(2*pi/T, d, g)*d;
+            // No ramp: at a quarter period the paddle is at its amplitude.
+            const scalar a = piston.value(T/4), angle = flap.value(T/4);
+            ASSERT_TRUE(std::isfinite(a) && std::isfinite(angle)) << kd;
+            for (const scalar t : {0.0, 0.3*T, 2.7*T})
+            {
+                EXPECT_TRUE(std::isfinite(piston.value(t))
+                         && std::isfinite(piston.derivative(t))
+                         && std::isfinite(flap.value(t))
+                         && std::isfinite(flap.derivative(t))) << t;
+            }
+            EXPECT_NEAR(a/(H/(2*pistonHeightOverStroke(kd))), 1,
+                        test::tol(1e-12, 1e-5)) << kd;
+            EXPECT_NEAR(std::tan(angle)*2*d/(H/flapHeightOverStroke(kd)), 1,
+                        test::tol(1e-12, 1e-5)) << kd;
+            if (kd > 100)       // deep water: H/S = 2, 2 (1 - 1/kd)
+            {
+                EXPECT_NEAR(a, H/4, test::tol(1e-15, 1e-9)) << kd;
+                EXPECT_NEAR(std::tan(angle)*2*d, H/(2*(1 - 1/kd)),
+                            test::tol(1e-15, 1e-9)) << kd;
+            }
+        }
+    }
+}
+
 TEST(timeFunction, errors)
 {
     test::scratchDir dir("tfErrors");
@@ -563,6 +575,17 @@ TEST(timeFunction, errors)
     expectFails("type pistonWave;\nwaveHeight 0.1;\ndepth 1;\nperiod 1;\n"
                 "units degrees;\n", true, motion, 3,
                 {"pistonWave is the offset of a translation", "flapWave"});
+    // No wave (w^2 d/g beyond the numbers), or a stroke beyond them: an
+    // error naming the keyword, never a NaN or infinite paddle.
+    expectFails("type pistonWave;\nwaveHeight 0.1;\ndepth 1;\n"
+                "period 1e-200;\n", false, motion, 6,
+                {"'period'", "no wave of period", "not a positive finite"});
+    expectFails("type flapWave;\nwaveHeight 0.1;\ndepth 1;\n"
+                "frequency 1e-200;\n", true, motion, 6,
+                {"'frequency'", "no wave of period", "not a positive finite"});
+    expectFails("type flapWave;\nwaveHeight 1e307;\ndepth 0.01;\n"
+                "period 100;\n", true, motion, 4,
+                {"'waveHeight'", "needs a stroke", "not a finite number"});
     // flapWave: an angle, derived in radians (no units).
     expectFails("type flapWave;\nwaveHeight 0.1;\ndepth 1;\nperiod 1;\n",
                 false, motion, 3, {"flapWave is the angle of a rotation",
