@@ -348,6 +348,22 @@ void timeFunction::readWavemaker(const dictionary& dict,
               " break, and linear theory does not give their height",
             e.file(), e.line());
     }
+    else if (stroke > 0.5*depth)
+    {
+        // Linear wavemaker theory takes the paddle's motion as small
+        // against the depth (a long shallow-water wave needs a long
+        // stroke): past half the depth its height is not what it gives.
+        const entry& e = dict.lookupEntry("waveHeight");
+        warning("Keyword 'waveHeight' in dictionary \"" + dict.name()
+            + "\": " + numberText(height) + " m needs a stroke of "
+            + numberText(stroke) + " m" + (flap ? " at the still-water"
+              " level (" + numberText(amplitude_*180/pi) + " degrees each"
+              " way)" : "") + ", more than half the depth "
+            + numberText(depth) + " m: linear wavemaker theory assumes a"
+              " small paddle motion, so the waves' height will differ"
+              " from the one asked for; and check the paddle has room",
+            e.file(), e.line());
+    }
 }
 
 

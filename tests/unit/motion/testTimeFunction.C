@@ -452,6 +452,25 @@ TEST(timeFunction, pistonWave)
     EXPECT_NE(warned.find("above the breaking height"), std::string::npos)
         << warned;
     EXPECT_NE(warned.find("line 4"), std::string::npos) << warned;
+
+    // A stroke beyond half the depth (a long wave in shallow water, here
+    // 1.99 m in 0.25 m): a warning, as linear theory no longer holds.
+    testing::internal::CaptureStderr();
+    readFunction(dir, "type pistonWave;\nwaveHeight 0.1;\ndepth 0.25;\n"
+                      "period 20;\n", false);
+    const std::string long1 = testing::internal::GetCapturedStderr();
+    EXPECT_NE(long1.find("more than half the depth"), std::string::npos)
+        << long1;
+    EXPECT_NE(long1.find("line 4"), std::string::npos) << long1;
+    testing::internal::CaptureStderr();
+    readFunction(dir, "type flapWave;\nwaveHeight 0.1;\ndepth 0.25;\n"
+                      "period 20;\n", true);
+    const std::string long2 = testing::internal::GetCapturedStderr();
+    EXPECT_NE(long2.find("degrees each way"), std::string::npos) << long2;
+    // The tutorial's wave is well inside.
+    testing::internal::CaptureStderr();
+    readFunction(dir, body, false);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
 
 // A flapWave is the angle whose travel at the still-water level, a depth
