@@ -230,9 +230,13 @@ solidBodySet::solidBodySet
     for (const solidBody& b : bodies_) solids += " " + b.name;
     for (const std::string& key : solidProperties.keys())
     {
-        const bool used = solidProperties.findEntry(key)->usedAsVariable()
+        // A solid uses the entry its name looks up: its own, or a quoted
+        // pattern ("pla.*") that matches it.
+        const auto* e = solidProperties.findEntry(key);
+        const bool used = e->usedAsVariable()
           || std::any_of(bodies_.begin(), bodies_.end(),
-            [&](const solidBody& b) { return b.name == key; });
+            [&](const solidBody& b)
+            { return solidProperties.findEntry(b.name) == e; });
         if (!used)
         {
             warning("Entry '" + key + "' of constant/solidProperties names"

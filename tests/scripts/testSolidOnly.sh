@@ -228,6 +228,13 @@ sphVcpmFsi -case "$v" > "$scratch/log.variable" 2>&1
 check "a variable in solidProperties: the run ends" grep -q '^End' "$scratch/log.variable"
 check "a variable in solidProperties: no warning" bash -c "! grep -q Warning '$scratch/log.variable'"
 expectIn "a variable in solidProperties: E read through it" "$scratch/log.variable" "E = 1e\+08 Pa"
+# A quoted pattern that matches the solid's name is its entry, used.
+rm -rf "$v"/0.*
+sed -i 's/^beam {/"be.*" {/' "$v/constant/solidProperties"
+sphVcpmFsi -case "$v" > "$scratch/log.pattern" 2>&1
+check "a pattern entry in solidProperties: the run ends" grep -q '^End' "$scratch/log.pattern"
+check "a pattern entry in solidProperties: no warning" bash -c "! grep -q Warning '$scratch/log.pattern'"
+expectIn "a pattern entry in solidProperties: E read through it" "$scratch/log.pattern" "E = 1e\+08 Pa"
 
 # 0/ generated again after the run, with the solid changed: generateParticles
 # warns of the later times, and the restart is refused (a longer beam has
