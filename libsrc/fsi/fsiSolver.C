@@ -14,6 +14,7 @@
 #include "withKernel.H"
 
 #include <algorithm>
+#include <functional>
 #include <chrono>
 #include <future>
 #include <cmath>
@@ -549,15 +550,15 @@ void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
     {
         return label(std::ceil(support/dp - 1e-6));
     };
-    auto warnThin = [&](const particleBody& body, const latticeMembers& thin,
-                        const vec3& at, const bool isSolid)
+    auto warnThin = [&](const particleBody& body, const label layers,
+                        const vec3& at)
     {
         const label needed = layersNeeded(body.dp());
-        const std::string where = std::to_string(thin.thinnestLayers)
-            + " layers (" + str(thin.thinnestLayers*body.dp()) + " m) thick"
-            " near " + str(at) + ", thinner than the kernel's support 2h = "
-            + str(support) + " m (hOverDp " + str(model_.hOverDp) + ")";
-        if (isSolid)
+        const std::string where = std::to_string(layers) + " layers ("
+            + str(layers*body.dp()) + " m) thick near " + str(at)
+            + ", thinner than the kernel's support 2h = " + str(support)
+            + " m (hOverDp " + str(model_.hOverDp) + ")";
+        if (body.type() == bodyType::solid)
         {
             // A thin plate is what the solid is; its load converges with
             // the fluid's resolution all the same (docs/fsi.md).
@@ -574,16 +575,14 @@ void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
             + std::to_string(needed) + " of a container or surface), or"
             " lower hOverDp", (caseDir_/"system/sphSchemes").string());
     };
-    auto notMeasured = [&](const particleBody& body)
-    {
-        log_<< "    " << bodyTypeName(body.type()) << " " << body.name()
-            << ": not on one lattice (turned by its motion, or from"
-            << " elsewhere): its thickness is not measured\n";
-    };
 
     // Walls that stay put and share a spacing are measured together: a
     // wall resting on another (a beach on the floor) is as thick as both.
     // A moving wall, and a solid, on its own.
+    auto joins = [&](const std::size_t b)
+    {
+        return bodies[b].type() == bodyType::wall && !motions_.of(b);
+    };
     std::vector<std::vector<std::size_t>> groups;
     std::size_t solid = 0;
     std::vector<std::size_t> solidIndex(bodies.size(), 0);
@@ -596,27 +595,24 @@ void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
         {
             continue;
         }
-        const bool joins = body.type() == bodyType::wall && !motions_.of(b);
-        bool placed = false;
-        for (auto& g : groups)
-        {
-            const particleBody& first = bodies[g.front()];
-            if (joins && first.type() == bodyType::wall
-             && !motions_.of(g.front()) && first.dp() == body.dp())
+        auto g = std::find_if(groups.begin(), groups.end(),
+            [&](const std::vector<std::size_t>& group)
             {
-                g.push_back(b);
-                placed = true;
-                break;
-            }
-        }
-        if (!placed) groups.push_back({b});
+                return joins(b) && joins(group.front())
+                    && bodies[group.front()].dp() == body.dp();
+            });
+        if (g != groups.end()) g->push_back(b);
+        else groups.push_back({b});
     }
 
-    for (const auto& g : groups)
+    // Measures the bodies of a group as one; a group not on one lattice
+    // (walls of one spacing on shifted lattices) body by body.
+    std::function<void(const std::vector<std::size_t>&)> measure =
+        [&](const std::vector<std::size_t>& group)
     {
         std::vector<vec3> points;
         std::vector<std::size_t> owner;
-        for (const std::size_t b : g)
+        for (const std::size_t b : group)
         {
             const particleBody& body = bodies[b];
             // A solid's reference lattice (a restart reads it deformed).
@@ -627,42 +623,29 @@ void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
             points.insert(points.end(), x.begin(), x.end());
             owner.insert(owner.end(), x.size(), b);
         }
-        const scalar dp = bodies[g.front()].dp();
+        const scalar dp = bodies[group.front()].dp();
         if (!onOneLattice(points, dp))
         {
-            // Each on its own (walls of one spacing on shifted lattices).
-            for (const std::size_t b : g)
+            if (group.size() > 1)
             {
-                const particleBody& body = bodies[b];
-                std::vector<vec3> own;
-                for (std::size_t i = 0; i < points.size(); ++i)
-                {
-                    if (owner[i] == b) own.push_back(points[i]);
-                }
-                if (!onOneLattice(own, dp))
-                {
-                    notMeasured(body);
-                    continue;
-                }
-                const latticeMembers thin = findThinMembers(own, dp,
-                    model_.nDimensions, layersNeeded(dp), true);
-                if (thin.thinnestLayers >= 0)
-                {
-                    warnThin(body, thin, own[thin.where],
-                             body.type() == bodyType::solid);
-                }
+                for (const std::size_t b : group) measure({b});
+                return;
             }
-            continue;
+            log_<< "    " << bodyTypeName(bodies[group.front()].type())
+                << " " << bodies[group.front()].name() << ": not on one"
+                << " lattice (turned by its motion, or from elsewhere): its"
+                << " thickness is not measured\n";
+            return;
         }
         const latticeMembers thin = findThinMembers(points, dp,
             model_.nDimensions, layersNeeded(dp), true);
         if (thin.thinnestLayers >= 0)
         {
-            const particleBody& body = bodies[owner[thin.where]];
-            warnThin(body, thin, points[thin.where],
-                     body.type() == bodyType::solid);
+            warnThin(bodies[owner[thin.where]], thin.thinnestLayers,
+                     points[thin.where]);
         }
-    }
+    };
+    for (const auto& g : groups) measure(g);
 }
 
 

@@ -7,6 +7,7 @@
 #include "dictionary.H"
 #include "error.H"
 #include "formatting.H"
+#include "gravity.H"
 
 #include <algorithm>
 #include <cctype>
@@ -280,16 +281,12 @@ void timeFunction::readWavemaker(const dictionary& dict,
                 " found " + numberText(v));
         }
     }
-    // |g| as the solver will use it; it checks the file itself.
-    scalar g = 9.81;
-    if (fs::exists(caseDir/"constant/g"))
+    // |g| as the solver reads it (the solver checks its plane).
+    const scalar g = mag(readGravity(caseDir, 0));
+    if (!(g > 0))
     {
-        g = mag(dictionary::fromFile(caseDir/"constant/g").get<vec3>("value"));
-        if (!(g > 0))
-        {
-            dict.fatalAt("type", "Dictionary \"" + dict.name() + "\": a"
-                " wavemaker needs gravity, and constant/g gives none");
-        }
+        dict.fatalAt("type", "Dictionary \"" + dict.name() + "\": a"
+            " wavemaker needs gravity, and constant/g gives none");
     }
     // Numbers no wave has (w^2 d/g overflowing or underflowing, a stroke
     // beyond the largest number) are errors, never a NaN or infinite

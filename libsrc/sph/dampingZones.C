@@ -8,6 +8,8 @@
 #include "error.H"
 #include "formatting.H"
 
+#include <utility>
+
 namespace sphvcpm
 {
 
@@ -42,9 +44,10 @@ dampingZones readDampingZones(const std::filesystem::path& caseDir,
         const vec3 start =
             sub.getDimensioned<vec3>("start", dimensions::length());
         const vec3 end = sub.getDimensioned<vec3>("end", dimensions::length());
-        for (const char* key : {"start", "end"})
+        for (const auto& [key, p] : {std::pair<const char*, vec3>{"start",
+            start}, {"end", end}})
         {
-            if (nDimensions == 2 && sub.get<vec3>(key).z != 0)
+            if (nDimensions == 2 && p.z != 0)
             {
                 sub.fatalAt(key, "Keyword '" + std::string(key) + "': a 2D"
                     " case lies in the x-y plane, so z must be 0");

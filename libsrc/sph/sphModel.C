@@ -115,29 +115,6 @@ void onlyForType(const dictionary& sub, const std::vector<std::string>& keys,
 } // End anonymous namespace
 
 
-vec3 readGravity(const std::filesystem::path& caseDir, const int nDimensions)
-{
-    // constant/g (OpenFOAM's uniformDimensionedVectorField); default:
-    // -9.81 along y in 2D and along z in 3D.
-    const auto file = caseDir/"constant/g";
-    if (!std::filesystem::exists(file))
-    {
-        return nDimensions == 3 ? vec3{0, 0, -9.81} : vec3{0, -9.81, 0};
-    }
-    dictionary dict = dictionary::fromFile(file);
-    dict.setCaseDimensions(nDimensions);
-    dict.checkKeywords({"dimensions", "value"});
-    const vec3 g = dict.getDimensioned<vec3>("value",
-                                             dimensions::acceleration());
-    if (nDimensions == 2 && g.z != 0)
-    {
-        dict.fatalAt("value", "a 2D case lies in the x-y plane:"
-            " gravity must have z = 0");
-    }
-    return g;
-}
-
-
 sphModel readSphModel(const std::filesystem::path& caseDir,
                       const int nDimensions, const scalar dp)
 {

@@ -75,7 +75,8 @@ scalar surfaceShift(const vcpmMaterial& m, const label nLayers)
     // or plane-stress beam. The energy of the middle column is linear in
     // gamma; gamma makes it the continuum 1/2 E' I k^2 per column. With the
     // clamp roots corrected, a member calibrated at its own thickness bends
-    // within 0.1 % of Timoshenko from 5 layers up (docs/vcpm.md).
+    // within 0.35 % of Timoshenko from 3 layers up in plane stress and in
+    // plane strain to nu = 0.3 (docs/vcpm.md).
     // A 2-layer member's faces shift each other's bonds back: no gamma.
     if (nLayers < 3) return 0;
     const int nRef = int(nLayers), nx = 5, nz = m.nDim() == 3 ? 5 : 1;
