@@ -2,12 +2,13 @@
 # sphVcpmFsi with solids and no fluid: a 2D plane-strain cantilever (6
 # layers, 60 free columns, 2 clamped) relaxed under gravity with damping,
 # with the surface correction on (the default). Its tip-column deflection
-# must match Timoshenko beam theory at that column within 3 %, with no
-# stiffness model (benchmarks/vcpmThinMembers: +1.4 % at 6 layers, L/H =
-# 10; 19 % off without the correction), and generateParticles must not
-# warn (6 layers are above the 4 the corrected lattice needs for 5 %). A
-# copy with 'surfaceCorrection off' must get generateParticles' thin-member
-# warning (about -16 %).
+# must match Timoshenko beam theory at that column within 1 % (the issue
+# asks 3 %), with no stiffness model (measured +0.000 %; 19 % off without
+# the correction), and generateParticles must not warn (the corrected
+# lattice needs 3 layers for 1 %, docs/vcpm.md). A copy with
+# 'surfaceCorrection off' must get generateParticles' thin-member warning
+# (about -16 %). Then the clamped-clamped plate of hydrostaticPlate2D alone
+# against 2D elasticity, error messages, restarts.
 source "$(dirname "$0")/testLib.sh"
 source "$(dirname "$0")/fieldTools.sh"
 
@@ -64,7 +65,7 @@ done
 
 check "no thin-member warning with the correction" \
     bash -c "! grep -q 'thinnest member' '$scratch/log.gen'"
-check "tip deflection within 3 % of Timoshenko" \
+check "tip deflection within 1 % of Timoshenko" \
 python3 - "$c" <<'PY'
 import re, sys
 c = sys.argv[1]
@@ -83,7 +84,7 @@ q = rho*g*H
 ref = q*xm**2*(6*L**2 - 4*L*xm + xm**2)/(24*EI) + q*(L*xm - xm**2/2)/kGA
 print("tip deflection %.6g m at x = %g, Timoshenko %.6g m (%+.3f %%)"
       % (w, xm, ref, 100*(w/ref - 1)))
-sys.exit(0 if abs(w/ref - 1) < 0.03 else 1)
+sys.exit(0 if abs(w/ref - 1) < 0.01 else 1)
 PY
 
 # particlesToVTK also writes the solid's stress as one symmetric tensor
@@ -333,4 +334,65 @@ err=$(sed -nE 's/.*expected ([-+0-9.]+) % off.*/\1/p' "$scratch/log.genOff")
 check "thin-member error reported without the correction" [ -n "$err" ]
 check "reported error about -16 %" \
     python3 -c "import sys; sys.exit(0 if -17 < float('${err:-0}') < -15 else 1)"
+
+# Both ends clamped: the plate of hydrostaticPlate2D alone (5 layers,
+# aluminium, plane strain), its water's load as its own weight (g raised
+# so that rho g t = g (rho_f H + rho_s t)), damped to rest. Its mid-span
+# deflection against 2D plane-strain elasticity with fully fixed end
+# sections (finite elements, the tutorial's validation/PLANE_STRAIN_FE.dat:
+# the load on the top face; as a body force the value differs by 0.003 %):
+# measured +0.57 % (docs/validation/hydrostaticPlate2D.md); +3.2 % before
+# the clamp roots of docs/vcpm.md.
+pl="$scratch/clampedPlate"
+mkdir -p "$pl/system" "$pl/constant"
+cat > "$pl/system/generateParticlesDict" <<'DICT'
+nDimensions 2;
+dp          0.01;
+bodies
+{
+    plate
+    {
+        type    solid;
+        shapes { p { shape box; min (-0.03 -0.05 0); max (1.03 0 0); } }
+        clamp
+        {
+            left  { shape box; min (-1 -1 0); max (0 1 0); }
+            right { shape box; min (1 -1 0); max (2 1 0); }
+        }
+    }
+}
+DICT
+cat > "$pl/constant/solidProperties" <<'DICT'
+plate { rho 2700; E 67.5e9; nu 0.34; lattice square2D; plane planeStrain; damping 30000; }
+DICT
+writeGravity "$pl" "(0 -155.1437 0)"
+cat > "$pl/system/controlDict" <<'DICT'
+application     sphVcpmFsi;
+startTime       0;
+endTime         0.1;
+deltaT          1e-5;
+writeControl    adjustableRunTime;
+writeInterval   0.1;
+logInterval     100000;
+functions
+{
+    midSpan { type solidPoints; body plate; points ((0.5 -0.025 0));
+              writeControl runTime; writeInterval 0.1; }
+}
+DICT
+generateParticles -case "$pl" > "$scratch/log.genPlate" 2>&1
+check "clamped plate: generateParticles" [ $? -eq 0 ]
+sphVcpmFsi -case "$pl" > "$scratch/log.plate" 2>&1
+check "clamped plate: sphVcpmFsi" [ $? -eq 0 ]
+fe="$SPHVCPM_DIR/tutorials/sphVcpmFsi/hydrostaticPlate2D/validation/PLANE_STRAIN_FE.dat"
+check "clamped plate: mid-span within 1 % of plane-strain finite elements" \
+python3 - "$pl/postProcessing/midSpan/0/displacement.dat" "$fe" <<'PY'
+import sys
+rows = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith('#')]
+fe = [l.split() for l in open(sys.argv[2]) if l.strip() and not l.startswith('#')]
+w, wFE = float(rows[-1][2]), float(fe[-1][0])
+print("t = %s s: mid-span %.6g m, finite elements %.6g m (%+.3f %%)"
+      % (rows[-1][0], w, wFE, 100*(w/wFE - 1)))
+sys.exit(0 if float(rows[-1][0]) == 0.1 and wFE < 0 and abs(w/wFE - 1) < 0.01 else 1)
+PY
 finish
