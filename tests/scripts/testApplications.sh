@@ -94,4 +94,34 @@ for v in 5.1 -nan nan inf -inf "" abc; do
     expectIn "checkValue fails '$v' against 5" "$scratch/check.status" "^value '$v': 1$"
 done
 
+# A known failure (validation/knownFailures: name | value | band) is not
+# counted while its value stays in the band; outside it, not a number, a
+# pass, or a line without its band, it is.
+mkdir -p "$scratch/case/validation"
+printf '# comment | 1 | 2\nbroken result | -19.5 | 3\nno band\n' \
+    > "$scratch/case/validation/knownFailures"
+(
+    cd "$scratch/case" || exit 1
+    . "$SPHVCPM_DIR/bin/tools/RunFunctions"
+    for v in -19.5 -17 -22.4 -23 -15 nan "" 4; do
+        validationFailures=0 validationKnownFailures=0
+        checkValue "broken result" "$v" 10 % > "$scratch/known.out"
+        echo "known '$v': $validationFailures $validationKnownFailures"
+    done
+    validationFailures=0
+    checkValue "no band" 20 10 % > "$scratch/noBand.out"
+    echo "no band: $validationFailures"
+) > "$scratch/known.status"
+for v in -19.5 -17 -22.4; do
+    expectIn "known failure $v in -19.5 +- 3: not counted" "$scratch/known.status" \
+        "^known '$v': 0 1$"
+done
+for v in -23 -15 nan "" 4; do
+    expectIn "known failure '$v' outside the band, or passing: counted" \
+        "$scratch/known.status" "^known '$v': 1 0$"
+done
+expectIn "a listed check without its band: counted" "$scratch/known.status" "^no band: 1$"
+expectIn "a listed check without its band: says so" "$scratch/noBand.out" \
+    "without '\| <known value> \| <band>' after its name"
+rm -r "$scratch/case/validation"
 finish
