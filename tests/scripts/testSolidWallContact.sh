@@ -3,9 +3,10 @@
 # the dry floor of a tank (water only in a far corner) must land and stay
 # on the floor: without contact it falls through the wall layers and out
 # of the domain. The block is damped (20 1/s) so that it settles: at the
-# end it rests at the contact distance (its lowest particle within a
-# quarter of d0 = (dp + dp_s)/2 of it) and its mean vertical speed is
-# small.
+# end it rests at the contact distance (its lowest particle within 0.5 mm
+# of it, a fifth of it; measured 2.44 mm against 2.5 mm) and its mean
+# vertical speed is small against the 1 m/s it lands with (below 20 mm/s;
+# measured 9.8 mm/s, the block still rocking on the contact).
 source "$(dirname "$0")/testLib.sh"
 source "$(dirname "$0")/fieldTools.sh"
 
@@ -38,7 +39,7 @@ read lowest vy <<< "$(paste -d ' ' <(fieldValues "$c/0.8/block/position") <(fiel
     awk '{ if (!n++ || $2 < m) m = $2; v += $5 } END { printf "%.6g %.6g\n", m, v/n }')"
 echo "    lowest block particle at y = $lowest m, mean vertical speed $vy m/s"
 check "the block rests on the floor at the contact distance (lowest y $lowest m, contact at 0.0025 m)" \
-    python3 -c "import sys; sys.exit(0 if abs($lowest - 0.0025) < 0.25*0.0075 else 1)"
+    python3 -c "import sys; sys.exit(0 if abs($lowest - 0.0025) < 0.0005 else 1)"
 check "the block is at rest (mean vertical speed $vy m/s)" \
     python3 -c "import sys; sys.exit(0 if abs($vy) < 0.02 else 1)"
 finish
