@@ -716,6 +716,72 @@ TEST(fluidRates, boundariesPushButNeverPull)
     }
 }
 
+// The Adami wall pressure of a wall on a prescribed motion: the fluid's
+// pressure continued into the wall along g - a_w (its acceleration). With
+// the hydrostatic field of a tank accelerating upwards at a,
+// p = rho0 (g + a) (H - y) at rest in the tank, the Shepard sums make the
+// wall's extrapolation exact: p_w = rho0 (g + a) (H - y_w) to round-off,
+// on the two floor rows that fluid reaches. Without the wall's
+// acceleration (the fixed wall's g alone) they would miss it by
+// rho0 a (y_mean - y_w), y_mean the kernel-weighted height of the fluid
+// they see, here a = 2 g over 2-3 dp: hundreds of pascals, caught.
+TEST(fluidRates, adamiWallPressureOfAcceleratedWall)
+{
+    fluidBlock<wendlandC2Kernel> b(20, 20, 0.01);
+    const scalar g0 = 9.81, a = 2*g0, H = 0.2;
+    for (label k = 0; k < b.n; ++k)
+    {
+        b.f.kind[k] = b.iy(k) < 3 ? wallKind : fluidKind;
+        b.f.body[k] = b.f.kind[k] == wallKind ? 1 : 0;
+    }
+    // Sorted again, now by kind within each cell (forEachFluidCandidate).
+    buildCellList(openmpExec{}, b.grid, b.f.position.data(), b.f.kind.data(),
+                  b.n, b.list);
+    b.f.reorder(b.list.order, b.list.nInside, false, false);
+    const scalar yFloor = 3*b.dp;
+    for (label k = 0; k < b.n; ++k)
+    {
+        b.f.p[k] = b.f.kind[k] == fluidKind
+                 ? rho0*(g0 + a)*(H - (b.f.position[k].y - yFloor)) : -1;
+    }
+    bodyMove moves[2] = {bodyMove::none(), bodyMove::none()};
+    moves[1].moves = 1;
+    moves[1].to.linearAcceleration = {0, a, 0};
+    std::vector<std::uint8_t> nearFluid(b.n, 1);
+    const auto wallPressures = [&](const bodyMove* m)
+    {
+        adamiWallOp<wendlandC2Kernel> op{b.kernel, b.grid, b.list.cellStart.data(),
+            b.list.kindEnd.data(), b.f.view(), b.eos, b.c.support2, {0, -g0, 0},
+            nearFluid.data(), m};
+        parallelFor(openmpExec{}, b.n, op);
+        std::vector<scalar> p(b.n);
+        for (label k = 0; k < b.n; ++k) p[k] = b.f.p[k];
+        return p;
+    };
+    const std::vector<scalar> moving = wallPressures(moves);
+    const std::vector<scalar> fixedWall = wallPressures(nullptr);
+    label count = 0;
+    scalar worstFixed = 0;
+    for (label k = 0; k < b.n; ++k)
+    {
+        if (b.f.kind[k] != wallKind || b.ix(k) < 3 || b.ix(k) >= b.nx - 3) continue;
+        if (b.iy(k) == 0)
+        {
+            // 3 dp below the first fluid row: at the edge of the support
+            // (h = 1.5 dp), no fluid in reach, p = 0 either way.
+            EXPECT_EQ(moving[k], 0) << k;
+            continue;
+        }
+        ++count;
+        const scalar exact = rho0*(g0 + a)*(H - (b.f.position[k].y - yFloor));
+        EXPECT_NEAR(moving[k], exact, test::tol(1e-9, 1e-4)*exact) << k;
+        EXPECT_NEAR(b.f.rho[k], b.eos.density(fixedWall[k]), 1e-9*rho0) << k;
+        worstFixed = std::max(worstFixed, std::abs(fixedWall[k] - exact));
+    }
+    EXPECT_EQ(count, 2*14);
+    EXPECT_GT(worstFixed, 0.5*rho0*a*b.dp);
+}
+
 // The contact push between fluid and boundary particles (boundaryContact):
 // with no pressure and no motion it is the only force. A fluid particle
 // moved toward a wall or solid particle of the same spacing gets
