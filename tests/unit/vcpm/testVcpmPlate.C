@@ -216,6 +216,11 @@ TEST(vcpmSolid, oscillatingPlate)
     report(n, r, T, 1 + thinMemberStiffnessError(n, m), true);
     EXPECT_GE(r.nCrossings, 20);
     EXPECT_NEAR(r.period/T, 1, 0.03);
+    // The reference's other check: the first peak against the linear
+    // v0/omega, V_f <= 0.01 (measured -1.2 % at 5 layers: the period's
+    // +0.9 % and the higher modes the start excites).
+    const scalar c0 = std::sqrt(E/(3*(1 - 2*nu))/rho);
+    EXPECT_NEAR(r.firstPeak/(Vf*c0/omega), 1, 0.03);
     expectNoEnergyGrowth(r);
 }
 
