@@ -395,6 +395,36 @@ void particleGenerator::checkSolid
                 + shapeDetail::str(bb.max, nDimensions_) + "): a clamp must"
                 " overlap the body's shapes", "clamp");
         }
+        // Held at one point (2D) or along one line (3D), the solid turns
+        // about it freely: most likely a clamp box that only grazes the
+        // body. A clamp usually holds the part inside a support.
+        bool pivot = nClamped < nDimensions_;
+        if (!pivot && nDimensions_ == 3)
+        {
+            label a = -1, b = -1;
+            pivot = true;
+            for (label p = 0; p < body.size() && pivot; ++p)
+            {
+                if (!clamped[p]) continue;
+                if (a < 0) { a = p; continue; }
+                if (b < 0) { b = p; continue; }
+                const vec3 ab = toVec3(position[b] - position[a]);
+                const vec3 ap = toVec3(position[p] - position[a]);
+                pivot = mag(cross(ab, ap)) <= 1e-6*mag(ab)*mag(ap);
+            }
+        }
+        if (pivot && nClamped < body.size())
+        {
+            const boundBox bb = spec.clamp->bounds();
+            warning(what + ": its clamp holds only " + std::to_string(nClamped)
+                + " of its " + std::to_string(body.size()) + " particles, "
+                + (nDimensions_ == 2 ? "one point" : "on one line")
+                + ", about which the solid can turn freely (clamp within "
+                + shapeDetail::str(bb.min, nDimensions_) + " to "
+                + shapeDetail::str(bb.max, nDimensions_) + "); a clamp"
+                " usually holds the part of the body inside a support, a few"
+                " layers deep", spec.clampFile, spec.clampLine);
+        }
         if (nClamped == body.size())
         {
             // Held everywhere it neither bends nor moves (unless the
@@ -463,6 +493,25 @@ void particleGenerator::checkSolid
                << (spec.material->surfaceCorrection ? "on" : "off")
                << "): refine dp to at most "
                << spec.dp*members.thinnestLayers/minLayers << " m";
+            // A solid's dp is the top-level dp over 1 to 4: name the
+            // coarsest of those that is fine enough, if one is.
+            const scalar needed = spec.dp*members.thinnestLayers/minLayers;
+            label r = 1;
+            while (r <= 4 && dp_/r > needed*(1 + 1e-9)) ++r;
+            if (r <= 4)
+            {
+                os << " (the solid's own dp may be the top-level dp "
+                   << dp_ << " divided by 1 to 4: 'dp " << dp_/r << ";'"
+                   << " in its entry gives about "
+                   << std::lround(members.thinnestLayers*spec.dp*r/dp_)
+                   << " layers)";
+            }
+            else
+            {
+                os << " (finer than the top-level dp " << dp_ << " divided by"
+                   << " 4, the finest a solid's own dp may be: refine the"
+                   << " top-level dp)";
+            }
             warning(os.str(), spec.file, spec.line);
         }
     }

@@ -18,6 +18,45 @@
 namespace sphvcpm
 {
 
+namespace
+{
+
+// A solid whose own weight alone would strain it by more than 10 %
+// (rho |g| L/E, L its extent along g) is far outside the lattice's small
+// strains and collapses at once, before any fluid reaches it: most often
+// E given in MPa or kPa as if in Pa. Said before the run, with the numbers.
+void warnIfOwnWeightCrushes(const std::string& name, const vcpmMaterial& mat,
+                            const std::vector<point>& reference,
+                            const scalar dp, const vec3& g)
+{
+    const scalar gMag = mag(g);
+    if (gMag <= 0 || reference.empty()) return;
+    const vec3 down = g/gMag;
+    scalar lo = dot(down, toVec3(reference[0])), hi = lo;
+    for (const point& x : reference)
+    {
+        const scalar s = dot(down, toVec3(x));
+        lo = std::min(lo, s);
+        hi = std::max(hi, s);
+    }
+    const scalar L = hi - lo + dp;
+    const scalar strain = mat.rho*gMag*L/mat.E;
+    if (strain > 0.1)
+    {
+        std::ostringstream os;
+        os.precision(3);
+        os << "Solid " << name << ": its own weight strains it by about"
+           << " rho |g| L/E = " << strain << " (rho = " << mat.rho
+           << " kg/m^3, L = " << L << " m along g, E = " << mat.E << " Pa),"
+           << " far beyond the lattice's small strains: it will collapse"
+           << " under its own weight. E is read in Pa (5 MPa is 5e6)";
+        warning(os.str(), "constant/solidProperties");
+    }
+}
+
+} // End anonymous namespace
+
+
 namespace fs = std::filesystem;
 
 vcpmMaterial solidBodySet::readMaterial
@@ -220,6 +259,7 @@ solidBodySet::solidBodySet
             << latticeDamping << "\n"
             << "        c_p = " << mat.pWaveSpeed << " m/s, stable deltaT = "
             << sb.stableDeltaT << " s\n";
+        warnIfOwnWeightCrushes(b.name(), mat, reference, b.dp(), g);
         bodies_.push_back(std::move(sb));
     }
 

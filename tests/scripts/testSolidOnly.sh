@@ -395,4 +395,15 @@ print("t = %s s: mid-span %.6g m, finite elements %.6g m (%+.3f %%)"
       % (rows[-1][0], w, wFE, 100*(w/wFE - 1)))
 sys.exit(0 if float(rows[-1][0]) == 0.1 and wFE < 0 and abs(w/wFE - 1) < 0.01 else 1)
 PY
+# E given as if in MPa (1e8 Pa meant, 100 written): its own weight would
+# strain the beam by rho g L/E = 1000 9.81 0.06/100 = 5.9, a warning
+# before the run naming the numbers.
+w="$scratch/ownWeight"
+cp -r "$c" "$w"; rm -rf "$w"/0.* "$w/postProcessing"
+sed -i 's/E 1e8;/E 100;/' "$w/constant/solidProperties"
+sed -i 's/^endTime .*/endTime 1e-4;/; s/^writeInterval .*/writeInterval 1e-4;/' "$w/system/controlDict"
+sphVcpmFsi -case "$w" > "$scratch/log.ownWeight" 2>&1
+expectIn "E far too low for its own weight: warned with the numbers" "$scratch/log.ownWeight" \
+    "Solid beam: its own weight strains it by about rho \|g\| L/E = 5\.89 \(rho = 1e\+03 kg/m\^3, L = 0\.06 m along g, E = 100 Pa\)"
+check "E = 1e8: no such warning" bash -c "! grep -q 'its own weight strains' '$scratch/log.run'"
 finish

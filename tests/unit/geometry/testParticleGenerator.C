@@ -799,6 +799,20 @@ TEST(particleGenerator, clampedSolid)
     EXPECT_EQ(genAll.summaries().front().nClamped, 200);
     EXPECT_NE(err.find("its clamp holds all of its 200 particles, so it"
                        " cannot deform"), std::string::npos) << err;
+
+    // A clamp box that grazes one corner particle: a pivot, a warning.
+    testCase corner(gateDict("(0.05 0.4 0)", "(0.04 0.39 0)"), "",
+        "gate { rho 1100; E 12e6; nu 0.4; plane planeStress; }\n");
+    particleGenerator genCorner(corner.path());
+    testing::internal::CaptureStderr();
+    genCorner.generate();
+    const std::string errCorner = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(genCorner.summaries().front().nClamped, 1);
+    EXPECT_NE(errCorner.find("Solid 'gate': its clamp holds only 1 of its 200"
+        " particles, one point, about which the solid can turn freely"),
+        std::string::npos) << errCorner;
+    // Two rows of 5 (the default above) are no pivot: no warning there,
+    // checked by the captures of the thin-solid tests' clamps too.
 }
 
 
@@ -842,6 +856,12 @@ TEST(particleGenerator, thinSolidWarns)
               std::string::npos) << err;
     EXPECT_NE(err.find("3 layers give at most 5 % at nu = 0.4 (surface"
                        " correction on)"), std::string::npos) << err;
+    // The hint names a spacing the solid may have (top-level dp over 1 to
+    // 4), the coarsest fine enough: 0.01 m/2 for 0.0067 m.
+    EXPECT_NE(err.find("refine dp to at most 0.00667 m (the solid's own dp"
+                       " may be the top-level dp 0.01 divided by 1 to 4:"
+                       " 'dp 0.005;' in its entry gives about 4 layers)"),
+              std::string::npos) << err;
 
     // 3 layers: no warning.
     testCase three(gateDict("(0.03 0.4 0)", "(-1 0.38 0)"), "",
@@ -886,6 +906,19 @@ TEST(particleGenerator, thinSolidWarns)
     EXPECT_NE(err.find(std::to_string(minLayers) + " layers give at most 5 %"
                        " at nu = 0.4 (surface correction off)"),
               std::string::npos) << err;
+
+    // Finer than a quarter of the top-level dp: the hint says to refine
+    // that (2 layers, 19 needed without the correction).
+    testCase thinOff(gateDict("(0.02 0.4 0)", "(-1 0.38 0)"), "",
+        "gate { rho 1100; E 12e6; nu 0.4; plane planeStress;"
+        " surfaceCorrection off; }\n");
+    particleGenerator genThinOff(thinOff.path());
+    testing::internal::CaptureStderr();
+    genThinOff.generate();
+    err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("finer than the top-level dp 0.01 divided by 4, the"
+                       " finest a solid's own dp may be: refine the top-level"
+                       " dp"), std::string::npos) << err;
 
     // Thick enough: no warning.
     testCase thick(gateDict("(0.3 0.4 0)", "(-1 0.38 0)"), "",
