@@ -70,7 +70,7 @@ int solveStatic(vcpmSolid& s, std::vector<vec3>& u)
         s.computeForces(openmpExec{});
         for (label p = 0; p < n; ++p)
         {
-            Av[p] = s.clamped[p] ? vec3{0, 0, 0} : -s.force[p]/h;
+            Av[p] = s.clamped()[p] ? vec3{0, 0, 0} : -s.force[p]/h;
         }
     };
     auto dotAll = [&](const std::vector<vec3>& a, const std::vector<vec3>& b)
@@ -84,7 +84,7 @@ int solveStatic(vcpmSolid& s, std::vector<vec3>& u)
     std::vector<vec3> r(n), d(n), Ad(n);
     for (label p = 0; p < n; ++p)
     {
-        r[p] = s.clamped[p] ? vec3{0, 0, 0} : load;
+        r[p] = s.clamped()[p] ? vec3{0, 0, 0} : load;
     }
     d = r;
     const scalar rr0 = dotAll(r, r);

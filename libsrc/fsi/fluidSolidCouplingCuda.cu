@@ -121,7 +121,7 @@ void fluidSolidCoupling::useDevice()
         velocity.insert(velocity.end(), s.velocity.begin(), s.velocity.end());
         clampVelocity.insert(clampVelocity.end(), s.clampVelocity.begin(),
                              s.clampVelocity.end());
-        clamped.insert(clamped.end(), s.clamped.begin(), s.clamped.end());
+        clamped.insert(clamped.end(), s.clamped().begin(), s.clamped().end());
         stretchSum.insert(stretchSum.end(), s.stretchSum.begin(),
                           s.stretchSum.end());
     }

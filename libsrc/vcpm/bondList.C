@@ -257,9 +257,10 @@ void bondList::correctClampRoots(const std::vector<std::uint8_t>& clamped)
     if (clamped.empty()) return;
     if (label(clamped.size()) != nParticles())
     {
-        throw FatalError("VCPM bond list: " + std::to_string(clamped.size())
-            + " clamp flags for " + std::to_string(nParticles())
-            + " particles", "", 0, "clamped");
+        throw FatalError("VCPM bond list: got "
+            + std::to_string(clamped.size()) + " clamp flags, expected "
+            + std::to_string(nParticles()) + " (one per particle) or none",
+            "", 0, "clamped");
     }
     // A bond from a clamped to a free particle is half inside the clamped
     // particle's rigid cell: its free half takes the whole stretch, at

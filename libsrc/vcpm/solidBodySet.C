@@ -322,7 +322,7 @@ std::vector<particleBody> solidBodySet::output(const int nDimensions,
         o.addVectorField("U") = s.velocity;
         o.addScalarField("mass", s.material().mass);
         std::vector<label>& clamped = o.addLabelField("clamped", 0);
-        for (label i = 0; i < n; ++i) clamped[i] = s.clamped[i];
+        for (label i = 0; i < n; ++i) clamped[i] = s.clamped()[i];
         o.addVectorField("displacement") = s.displacement();
 
         std::vector<stressTensor> sigma;

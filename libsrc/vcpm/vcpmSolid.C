@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 namespace sphvcpm
 {
@@ -35,6 +36,23 @@ bondList solidBonds(const vcpmMaterial& material,
         clamps);
 }
 
+// The clamp flags, one per particle (empty: none); FatalError on any
+// other size, whether or not the bonds use them (without the surface
+// correction they are not checked there, and the step reads one per
+// particle).
+std::vector<std::uint8_t> checkedClamps(const std::vector<std::uint8_t>& clamps,
+                                        const std::size_t nParticles)
+{
+    if (clamps.empty()) return std::vector<std::uint8_t>(nParticles, 0);
+    if (clamps.size() != nParticles)
+    {
+        fatalError("VCPM solid: " + std::to_string(clamps.size())
+            + " clamp flags for " + std::to_string(nParticles)
+            + " particles; expected one per particle (or none)");
+    }
+    return clamps;
+}
+
 } // End anonymous namespace
 
 
@@ -46,13 +64,12 @@ vcpmSolid::vcpmSolid(const vcpmMaterial& material,
     velocity(reference.size(), vec3{0, 0, 0}),
     force(reference.size(), vec3{0, 0, 0}),
     externalForce(reference.size(), vec3{0, 0, 0}),
-    clamped(clamps.empty() ? std::vector<std::uint8_t>(reference.size(), 0)
-                           : clamps),
     clampVelocity(reference.size(), vec3{0, 0, 0}),
     stretchSum(2*reference.size(), 0),
     material_(material),
     reference_(reference),
-    bonds_(solidBonds(material, reference, clamps))
+    clamped_(checkedClamps(clamps, reference.size())),
+    bonds_(solidBonds(material, reference, clamped_))
 {
     const std::size_t thin = bonds_.withoutSecondLayer().size();
     if (thin)

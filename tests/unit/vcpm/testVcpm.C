@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -663,7 +664,7 @@ TEST(vcpmSolid, dampedColumnUnderGravity)
             uTop += s.position[p].y - s.reference()[p].y;
             ++nTop;
         }
-        if (s.clamped[p])
+        if (s.clamped()[p])
         {
             ASSERT_EQ(s.position[p], s.reference()[p]);
         }
@@ -673,6 +674,52 @@ TEST(vcpmSolid, dampedColumnUnderGravity)
     std::printf("column: u_top = %.5e, chain %.5e, error %.2e, max |v| %.1e\n",
                 uTop, exact, uTop/exact - 1, maxV);
     EXPECT_NEAR(uTop/exact, 1, 0.01);
+}
+
+// * * * * * * * * * * * * * * * *  Clamps * * * * * * * * * * * * * * * * //
+
+// A clamp vector of the wrong size is an error naming both sizes, with the
+// surface correction on (the bond list's clamp roots) and off (the bonds
+// never see the clamps; the step reads one flag per particle).
+TEST(vcpmSolid, wrongClampCountIsFatal)
+{
+    for (const bool surface : {false, true})
+    {
+        SCOPED_TRACE(surface ? "surface correction on" : "off");
+        const vcpmMaterial m = material(sq, pStrain, 0.3, 0.01, surface);
+        const std::vector<point> X = block(4, 3, 1, m.l0);
+        const std::vector<std::uint8_t> clamps(X.size() - 1, 1);
+        try
+        {
+            vcpmSolid s(m, X, clamps);
+            ADD_FAILURE() << "no error for 11 clamp flags on 12 particles";
+        }
+        catch (const FatalError& e)
+        {
+            EXPECT_NE(e.message().find("11 clamp flags for 12 particles"),
+                      std::string::npos) << e.message();
+        }
+        // No flags: none clamped; one per particle: taken as given.
+        EXPECT_EQ(vcpmSolid(m, X).clamped(),
+                  std::vector<std::uint8_t>(X.size(), 0));
+        std::vector<std::uint8_t> some(X.size(), 0);
+        some[0] = some[4] = 1;
+        EXPECT_EQ(vcpmSolid(m, X, some).clamped(), some);
+    }
+    // The bond list says what it got and what it expected.
+    const std::vector<point> X = block(4, 3, 1, 0.01);
+    try
+    {
+        const std::function<scalar(label)> gammaOf =
+            [](label) { return scalar(0.2); };
+        bondList(X, 0.01, gammaOf, std::vector<std::uint8_t>(5, 0));
+        ADD_FAILURE() << "no error for 5 clamp flags on 12 particles";
+    }
+    catch (const FatalError& e)
+    {
+        EXPECT_NE(e.message().find("got 5 clamp flags, expected 12"),
+                  std::string::npos) << e.message();
+    }
 }
 
 // Issue 4's patch test on the default path (surface correction on): a free

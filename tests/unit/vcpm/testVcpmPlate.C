@@ -91,7 +91,7 @@ plateResult runPlate(const int nLayers, const scalar Vf, const scalar Texp,
         scalar f2 = 0;
         for (label p = 0; p < s.size(); ++p)
         {
-            if (!s.clamped[p]) f2 += magSqr(s.force[p]);
+            if (!s.clamped()[p]) f2 += magSqr(s.force[p]);
         }
         plain = s.kineticEnergy() + s.elasticEnergy(serialExec{});
         shadow = plain - dt*dt/(8*m.mass)*f2;
