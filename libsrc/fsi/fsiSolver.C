@@ -576,76 +576,101 @@ void fsiSolver::checkWallThickness(const std::vector<particleBody>& bodies)
             " lower hOverDp", (caseDir_/"system/sphSchemes").string());
     };
 
-    // Walls that stay put and share a spacing are measured together: a
-    // wall resting on another (a beach on the floor) is as thick as both.
-    // A moving wall, and a solid, on its own.
+    // The points measured for a body: a solid's reference lattice (a
+    // restart reads it deformed), a wall's positions.
+    std::size_t solid = 0;
+    std::vector<std::size_t> solidIndex(bodies.size(), 0);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+    {
+        if (bodies[b].type() == bodyType::solid) solidIndex[b] = solid++;
+    }
+    auto pointsOf = [&](const std::size_t b)
+    {
+        const particleBody& body = bodies[b];
+        return toVectors(body.type() == bodyType::solid
+            ? solids_->bodies()[solidIndex[b]].solid->reference()
+            : body.position());
+    };
+
+    // Walls that stay put, share a spacing and lie on one lattice are
+    // measured together: a wall resting on another (a beach on the floor)
+    // is as thick as both. A wall on a shifted lattice (its own
+    // latticeOrigin) forms a group of its own, so it does not keep the
+    // others from being measured together; a moving wall, and a solid, are
+    // measured on their own.
     auto joins = [&](const std::size_t b)
     {
         return bodies[b].type() == bodyType::wall && !motions_.of(b);
     };
     std::vector<std::vector<std::size_t>> groups;
-    std::size_t solid = 0;
-    std::vector<std::size_t> solidIndex(bodies.size(), 0);
+    // A node of each group's lattice; whether others may join it (a static
+    // wall on one lattice).
+    std::vector<vec3> groupOrigin;
+    std::vector<bool> groupOpen;
     for (std::size_t b = 0; b < bodies.size(); ++b)
     {
         const particleBody& body = bodies[b];
-        if (body.type() == bodyType::solid) solidIndex[b] = solid++;
         if (body.type() == bodyType::fluid || body.size() == 0
          || layersNeeded(body.dp()) < 2)
         {
             continue;
         }
-        auto g = std::find_if(groups.begin(), groups.end(),
-            [&](const std::vector<std::size_t>& group)
+        const std::vector<vec3> x = pointsOf(b);
+        const bool open = joins(b) && onOneLattice(x, body.dp());
+        std::size_t g = groups.size();
+        for (std::size_t i = 0; open && i < groups.size(); ++i)
+        {
+            if (groupOpen[i] && bodies[groups[i].front()].dp() == body.dp()
+             && onLatticeThrough(x, groupOrigin[i], body.dp()))
             {
-                return joins(b) && joins(group.front())
-                    && bodies[group.front()].dp() == body.dp();
-            });
-        if (g != groups.end()) g->push_back(b);
-        else groups.push_back({b});
+                g = i;
+                break;
+            }
+        }
+        if (g < groups.size())
+        {
+            groups[g].push_back(b);
+            continue;
+        }
+        groups.push_back({b});
+        groupOrigin.push_back(x.front());
+        groupOpen.push_back(open);
     }
 
-    // Measures the bodies of a group as one; a group not on one lattice
-    // (walls of one spacing on shifted lattices) body by body.
-    std::function<void(const std::vector<std::size_t>&)> measure =
-        [&](const std::vector<std::size_t>& group)
+    // Measures the bodies of a group as one (all on one lattice, by the
+    // grouping) and warns for each body with a member that is too thin.
+    for (const std::vector<std::size_t>& group : groups)
     {
         std::vector<vec3> points;
-        std::vector<std::size_t> owner;
-        for (const std::size_t b : group)
+        std::vector<label> owner;
+        for (std::size_t i = 0; i < group.size(); ++i)
         {
-            const particleBody& body = bodies[b];
-            // A solid's reference lattice (a restart reads it deformed).
-            const std::vector<vec3> x = toVectors(
-                body.type() == bodyType::solid
-              ? solids_->bodies()[solidIndex[b]].solid->reference()
-              : body.position());
+            const std::vector<vec3> x = pointsOf(group[i]);
             points.insert(points.end(), x.begin(), x.end());
-            owner.insert(owner.end(), x.size(), b);
+            owner.insert(owner.end(), x.size(), label(i));
         }
-        const scalar dp = bodies[group.front()].dp();
+        const particleBody& front = bodies[group.front()];
+        const scalar dp = front.dp();
         if (!onOneLattice(points, dp))
         {
-            if (group.size() > 1)
-            {
-                for (const std::size_t b : group) measure({b});
-                return;
-            }
-            log_<< "    " << bodyTypeName(bodies[group.front()].type())
-                << " " << bodies[group.front()].name() << ": not on one"
-                << " lattice (turned by its motion, or from elsewhere): its"
-                << " thickness is not measured\n";
-            return;
+            log_<< "    " << bodyTypeName(front.type()) << " "
+                << front.name() << ": not on one lattice (turned by its"
+                << " motion, or from elsewhere): its thickness is not"
+                << " measured\n";
+            continue;
         }
-        const latticeMembers thin = findThinMembers(points, dp,
-            model_.nDimensions, layersNeeded(dp), true);
-        if (thin.thinnestLayers >= 0)
+        const std::vector<latticeMembers> thin = findThinMembersByOwner(
+            points, owner, label(group.size()), dp, model_.nDimensions,
+            layersNeeded(dp), true);
+        for (std::size_t i = 0; i < group.size(); ++i)
         {
-            warnThin(bodies[owner[thin.where]], thin.thinnestLayers,
-                     points[thin.where]);
+            if (thin[i].thinnestLayers >= 0)
+            {
+                warnThin(bodies[group[i]], thin[i].thinnestLayers,
+                         points[thin[i].where]);
+            }
         }
-    };
-    for (const auto& g : groups) measure(g);
+    }
 }
 
 

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <unordered_map>
 
 namespace sphvcpm
@@ -45,9 +46,16 @@ bool latticeCell(const vec3& p, const vec3& p0, const scalar dp, cell& c)
 
 bool onOneLattice(const std::vector<vec3>& points, const scalar dp)
 {
+    return points.empty() || onLatticeThrough(points, points.front(), dp);
+}
+
+
+bool onLatticeThrough(const std::vector<vec3>& points, const vec3& p0,
+                      const scalar dp)
+{
     cell c;
     return std::all_of(points.begin(), points.end(), [&](const vec3& p)
-        { return latticeCell(p, points.front(), dp, c); });
+        { return latticeCell(p, p0, dp, c); });
 }
 
 
@@ -60,11 +68,32 @@ latticeMembers findThinMembers
     const bool skipEdges
 )
 {
-    latticeMembers result;
+    return findThinMembersByOwner(points, std::vector<label>(points.size(), 0),
+        1, dp, nDimensions, maxLayers, skipEdges).front();
+}
+
+
+std::vector<latticeMembers> findThinMembersByOwner
+(
+    const std::vector<vec3>& points,
+    const std::vector<label>& owner,
+    const label nOwners,
+    const scalar dp,
+    const int nDimensions,
+    const label maxLayers,
+    const bool skipEdges
+)
+{
+    std::vector<latticeMembers> results(std::max<label>(nOwners, 1));
     const std::size_t n = points.size();
     if (!n)
     {
-        return result;
+        return results;
+    }
+    if (owner.size() != n)
+    {
+        fatalError("findThinMembersByOwner: " + std::to_string(owner.size())
+            + " owners for " + std::to_string(n) + " points");
     }
 
     // Integer cells relative to the first point: every body lies on one
@@ -117,6 +146,14 @@ latticeMembers findThinMembers
 
     for (label p = 0; p < label(n); ++p)
     {
+        if (owner[p] < 0 || owner[p] >= label(results.size()))
+        {
+            fatalError("findThinMembersByOwner: owner "
+                + std::to_string(owner[p]) + " of point "
+                + std::to_string(p) + " is not in [0, "
+                + std::to_string(results.size()) + ")");
+        }
+        latticeMembers& result = results[owner[p]];
         // Second neighbours: diagonal in some pair of axes.
         for (int a = 0; a < nDimensions && !result.hasSecondNeighbours; ++a)
         {
@@ -186,7 +223,7 @@ latticeMembers findThinMembers
             }
         }
     }
-    return result;
+    return results;
 }
 
 } // End namespace sphvcpm

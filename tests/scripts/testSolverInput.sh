@@ -162,6 +162,23 @@ fresh; sed -i 's/^    water$/    baffle { type wall; shapes { b { shape box; min
 (cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
 expectIn "a baffle of 1 layer on the floor: warned" "$scratch/c/log.solver" \
     "Wall 'baffle' has a member only 1 layers \\(0.01 m\\) thick"
+# Two such baffles in the one group of static walls: each is named.
+fresh; sed -i 's/^    water$/    baffle { type wall; shapes { b { shape box; min (0.6 0 0); max (0.61 0.2 0); } } }\n    baffle2 { type wall; shapes { b { shape box; min (0.7 0 0); max (0.71 0.2 0); } } }\n&/' \
+    "$scratch/c/system/generateParticlesDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+expectIn "two baffles of 1 layer on the floor: the first warned" "$scratch/c/log.solver" \
+    "Wall 'baffle' has a member only 1 layers"
+expectIn "two baffles of 1 layer on the floor: the second warned" "$scratch/c/log.solver" \
+    "Wall 'baffle2' has a member only 1 layers"
+# A thick static wall on a shifted lattice (its own latticeOrigin) forms a
+# group of its own: the wedge on the floor is still measured with the
+# floor, no false warning.
+fresh; sed -i 's/^    water$/    ramp { type wall; shapes { w { shape polygon; points ((0.5 0) (0.8 0) (0.8 0.1)); } } }\n    block { type wall; latticeOrigin (0.005 0.005 0); shapes { b { shape box; min (0.4 0.3 0); max (0.46 0.36 0); } } }\n&/' \
+    "$scratch/c/system/generateParticlesDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+check "a wedge on the floor and a wall off its lattice: the run ends" grep -q '^End' "$scratch/c/log.solver"
+check "a wedge on the floor and a wall off its lattice: no warning about the walls" \
+    bash -c "! grep -q 'has a member only' '$scratch/c/log.solver'"
 
 # Damping zones: logged when read; a bad one is an error naming the file.
 fresh; echo "beach { start (0.5 0 0); end (0.8 0 0); rate 20; }" > "$scratch/c/constant/dampingZones"

@@ -1010,3 +1010,55 @@ TEST(latticeMembers, onOneLattice)
     scaled[5].x = std::nan("");
     EXPECT_FALSE(onOneLattice(scaled, 0.01));
 }
+
+
+// Several bodies measured as one: each owner's thinnest member. A floor
+// 40 x 4 with two baffles 1 thick and 10 high standing on it, and a
+// third body 6 x 6 beside them: both baffles are named, the floor and the
+// block have no thin member (the baffles' feet make the floor no thinner).
+TEST(latticeMembers, thinnestPerOwner)
+{
+    std::vector<vec3> points;
+    std::vector<label> owner;
+    auto add = [&](const std::vector<vec3>& body, const label o)
+    {
+        points.insert(points.end(), body.begin(), body.end());
+        owner.insert(owner.end(), body.size(), o);
+    };
+    add(block(40, 4), 0);
+    add(block(1, 10, 10, 4), 1);
+    add(block(1, 10, 20, 4), 2);
+    add(block(6, 6, 30, 4), 3);
+    const std::vector<latticeMembers> thin =
+        findThinMembersByOwner(points, owner, 4, 1, 2, 3, true);
+    ASSERT_EQ(thin.size(), 4u);
+    EXPECT_EQ(thin[0].thinnestLayers, -1);
+    EXPECT_EQ(thin[1].thinnestLayers, 1);
+    EXPECT_EQ(owner[thin[1].where], 1);
+    EXPECT_EQ(thin[2].thinnestLayers, 1);
+    EXPECT_EQ(owner[thin[2].where], 2);
+    EXPECT_EQ(thin[3].thinnestLayers, -1);
+    // As one body: the thinnest member only.
+    EXPECT_EQ(findThinMembers(points, 1, 2, 3, true).thinnestLayers, 1);
+    // Owners that are not one per point, or out of range: an error.
+    owner.pop_back();
+    EXPECT_THROW(findThinMembersByOwner(points, owner, 4, 1, 2, 3),
+                 FatalError);
+    owner.push_back(4);
+    EXPECT_THROW(findThinMembersByOwner(points, owner, 4, 1, 2, 3),
+                 FatalError);
+}
+
+
+// The lattice through a given node: a body of one spacing on a shifted
+// lattice is not on it.
+TEST(latticeMembers, onLatticeThrough)
+{
+    const std::vector<vec3> floor = block(20, 3);
+    const std::vector<vec3> onIt = block(4, 4, 5, 3);
+    const std::vector<vec3> shifted = block(4, 4, 5.5, 3.5);
+    EXPECT_TRUE(onLatticeThrough(onIt, floor.front(), 1));
+    EXPECT_FALSE(onLatticeThrough(shifted, floor.front(), 1));
+    EXPECT_TRUE(onLatticeThrough(shifted, shifted.front(), 1));
+    EXPECT_TRUE(onOneLattice({}, 1));
+}
