@@ -345,7 +345,9 @@ void timeFunction::readWavemaker(const dictionary& dict,
               " break, and linear theory does not give their height",
             e.file(), e.line());
     }
-    else if (stroke > 0.5*depth)
+    // Independent of the breaking check: a wave can be both too high and
+    // need too long a stroke, and each warning asks for another change.
+    if (stroke > 0.5*depth)
     {
         // Linear wavemaker theory takes the paddle's motion as small
         // against the depth (a long shallow-water wave needs a long

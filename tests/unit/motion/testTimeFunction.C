@@ -467,6 +467,16 @@ TEST(timeFunction, pistonWave)
                       "period 20;\n", true);
     const std::string long2 = testing::internal::GetCapturedStderr();
     EXPECT_NE(long2.find("degrees each way"), std::string::npos) << long2;
+    // Both too high and too long a stroke (0.3 m above the breaking
+    // height of about 0.22 m, stroke about 6 m in 0.25 m): both warnings.
+    testing::internal::CaptureStderr();
+    readFunction(dir, "type pistonWave;\nwaveHeight 0.3;\ndepth 0.25;\n"
+                      "period 20;\n", false);
+    const std::string both = testing::internal::GetCapturedStderr();
+    EXPECT_NE(both.find("above the breaking height"), std::string::npos)
+        << both;
+    EXPECT_NE(both.find("more than half the depth"), std::string::npos)
+        << both;
     // The tutorial's wave is well inside.
     testing::internal::CaptureStderr();
     readFunction(dir, body, false);
