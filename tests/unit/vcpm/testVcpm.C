@@ -722,6 +722,145 @@ TEST(vcpmSolid, wrongClampCountIsFatal)
     }
 }
 
+namespace
+{
+
+// A block of nx x ny (x nz) particles with the two columns x < 1.5 l0
+// clamped (a slab in 3D).
+std::vector<std::uint8_t> clampedSlab(const std::vector<point>& X,
+                                      const scalar l0)
+{
+    return clampedBehind(X, 1.5*l0);
+}
+
+} // End anonymous namespace
+
+// bondList::correctClampRoots, against the same bond list without clamps:
+// on a bond from a clamped to a free particle the free end's weight doubles
+// (2, or 4 where the free particle is also a surface end of the bond, its
+// mirror weight), the clamped end's is 0 and the pair factor doubles; every
+// other bond is unchanged, the surface shifts included.
+TEST(vcpmClampRoots, weightsAndPairFactors)
+{
+    const scalar l0 = 0.01;
+    // gamma grows with the layers, so that the shifts differ bond to bond.
+    // (A std::function: a bare lambda would also convert to the bool of
+    // the other constructor.)
+    const std::function<scalar(label)> gammaOf =
+        [](const label n) { return scalar(0.05*n); };
+    for (const int nz : {1, 4})
+    {
+        SCOPED_TRACE(nz == 1 ? "2D" : "3D");
+        const std::vector<point> X = block(5, 4, nz, l0);
+        const std::vector<std::uint8_t> clamps = clampedSlab(X, l0);
+        const bondList plain(X, l0, gammaOf, std::vector<std::uint8_t>{});
+        const bondList b(X, l0, gammaOf, clamps);
+        ASSERT_EQ(b.nBonds(), plain.nBonds());
+        label nRoots = 0, nFour = 0;
+        for (label k = 0; k < b.nBonds(); ++k)
+        {
+            ASSERT_EQ(b.first()[k], plain.first()[k]);
+            ASSERT_EQ(b.second()[k], plain.second()[k]);
+            const bool ci = clamps[b.first()[k]], cj = clamps[b.second()[k]];
+            if (ci == cj)
+            {
+                EXPECT_EQ(b.weight()[2*k], plain.weight()[2*k]) << k;
+                EXPECT_EQ(b.weight()[2*k + 1], plain.weight()[2*k + 1]) << k;
+                EXPECT_EQ(b.pairFactor()[k], plain.pairFactor()[k]) << k;
+                continue;
+            }
+            ++nRoots;
+            const std::size_t freeEnd = 2*std::size_t(k) + (ci ? 1 : 0);
+            const std::size_t clampedEnd = 2*std::size_t(k) + (ci ? 0 : 1);
+            const scalar w0 = plain.weight()[freeEnd];
+            ASSERT_TRUE(w0 == 1 || w0 == 2) << k;
+            EXPECT_EQ(b.weight()[freeEnd], 2*w0) << k;
+            EXPECT_EQ(b.weight()[clampedEnd], 0) << k;
+            EXPECT_EQ(b.pairFactor()[k], 2*plain.pairFactor()[k]) << k;
+            nFour += w0 == 2;
+        }
+        // Between the columns x = 1 and 2: the layer-1 bonds along x, one
+        // per row, and 2 (ny - 1) diagonals per xy plane (and per xz plane
+        // in 3D).
+        const label rows = 4*nz;
+        const label diagonals = 2*3*nz + (nz > 1 ? 2*(nz - 1)*4 : 0);
+        EXPECT_EQ(nRoots, rows + diagonals);
+        // The diagonals onto a free particle of an outer face (y or z at
+        // the block's end) have no opposite bond there: weight 4.
+        EXPECT_GT(nFour, 0);
+    }
+}
+
+// With the clamp roots the forces are still -dU/dx (weights 0 and 4 and
+// the doubled pair factors included), and a rigid translation and rotation
+// of the whole body, clamps moved with it, gives no force.
+TEST(vcpmClampRoots, forceIsMinusEnergyGradientAndRigidMotionIsFree)
+{
+    // Strains of 1e-6 to 1e-3 on positions of order 1: float resolves
+    // only eps |x|/l0 ~ 1e-5 of strain (docs/solver.md, Precision).
+    SPHVCPM_DOUBLE_ONLY();
+    for (const vcpmLattice lat : {sq, sc})
+    {
+        SCOPED_TRACE(lat == sc ? "3D" : "2D");
+        const vcpmMaterial m = material(lat, pStrain, 0.3, 0.01, true);
+        const std::vector<point> X =
+            block(5, 4, m.nDim() == 3 ? 4 : 1, m.l0);
+        vcpmSolid s(m, X, clampedSlab(X, m.l0));
+        const vcpmSolid plain(m, X);
+        label roots = 0;
+        for (label k = 0; k < s.bonds().nBonds(); ++k)
+        {
+            roots += s.bonds().pairFactor()[k]
+                  != plain.bonds().pairFactor()[k];
+        }
+        ASSERT_GT(roots, 0);
+
+        perturb(s.position, 0.05*m.l0, m.nDim(), 17);
+        s.computeForces(serialExec{});
+        const std::vector<vec3> f = s.force;
+        const scalar h = 1e-6*m.l0;
+        scalar maxErr = 0;
+        for (label p = 0; p < s.size(); ++p)
+        {
+            for (int d = 0; d < m.nDim(); ++d)
+            {
+                const scalar x0 = s.position[p][d];
+                s.position[p][d] = x0 + h;
+                const scalar Up = s.elasticEnergy(serialExec{});
+                s.position[p][d] = x0 - h;
+                const scalar Um = s.elasticEnergy(serialExec{});
+                s.position[p][d] = x0;
+                maxErr = std::max(maxErr,
+                                  std::abs(-(Up - Um)/(2*h) - f[p][d]));
+            }
+        }
+        const scalar rel = maxErr/maxMag(f);
+        std::printf("clamp roots, %s: force vs -dU/dx max relative error "
+                    "%.2e\n", lat == sc ? "3D" : "2D", rel);
+        EXPECT_LT(rel, 1e-8);
+
+        // 90 degrees about z (2D) or about (1, 1, 1)/sqrt(3) (3D), plus a
+        // shift, of every particle, the clamped ones too.
+        for (label p = 0; p < s.size(); ++p)
+        {
+            const point x = X[p];
+            if (m.nDim() == 2) s.position[p] = point{-x.y, x.x, 0}
+                                             + point{0.3, -0.2, 0};
+            else
+            {
+                const scalar c = 1/std::sqrt(3.0);
+                const point n{c, c, c};
+                s.position[p] = dot(n, x)*n + cross(n, x)
+                              + point{0.3, -0.2, 0.1};
+            }
+        }
+        s.computeForces(serialExec{});
+        std::printf("clamp roots, %s: rigid motion max|f|/(k1 l0) = %.1e\n",
+                    lat == sc ? "3D" : "2D", maxMag(s.force)/(m.k1*m.l0));
+        EXPECT_LT(maxMag(s.force), 1e-10*m.k1*m.l0);
+    }
+}
+
 // Issue 4's patch test on the default path (surface correction on): a free
 // 2D block, 40 x 8 particles, pulled by a uniform traction sigma0 on its
 // two end columns (force sigma0 l0 t per particle) and relaxed with
