@@ -548,7 +548,11 @@ float milliseconds(const Body& body, const int repeats)
 } // End anonymous namespace
 
 
-TEST(cudaParallel, timings)
+// A benchmark, not a test: it prints the times of the primitives and
+// asserts nothing, so it is disabled; run it by hand with
+//   test_parallelCuda --gtest_filter='cudaParallel.*timings'
+//                     --gtest_also_run_disabled_tests
+TEST(cudaParallel, DISABLED_timings)
 {
     SKIP_WITHOUT_GPU();
     const label n = 1200000;
@@ -595,5 +599,4 @@ TEST(cudaParallel, timings)
     std::cout << "    n = " << n << ": sortByKey (18-bit cell keys) "
         << sortMs - copyMs << " ms, exclusiveScan " << scanMs
         << " ms, parallelReduce (sum) " << reduceMs << " ms" << std::endl;
-    EXPECT_TRUE(true);
 }

@@ -471,7 +471,9 @@ TEST_P(vcpmLatticeCases, uniaxialStressPoissonContraction)
     std::vector<stressTensor> sigma;
     s.stress(serialExec{}, sigma);
     scalar errAxial = 0, errLateral = 0;
-    for (const label p : interior(s))
+    const std::vector<label> in = interior(s);
+    ASSERT_FALSE(in.empty());
+    for (const label p : in)
     {
         errAxial = std::max(errAxial, std::abs(sigma[p].xx/(Eeff*eps) - 1));
         errLateral = std::max({errLateral, std::abs(sigma[p].yy/sigma[p].xx),
