@@ -211,7 +211,9 @@ void bondList::correctSurfaces(const std::vector<point>& X, const scalar l0,
         }
     }
     // Layers of the member under surface particle p, counted along -m (up
-    // to maxShiftLayers: the shift hardly changes beyond).
+    // to maxShiftLayers: the shift hardly changes beyond). The count stops
+    // at the first hole: a surface bond above a void gets the gamma of the
+    // ligament above the void (a choice, docs/vcpm.md).
     auto layersUnder = [&](label p, const vec3& m)
     {
         label n = 1;

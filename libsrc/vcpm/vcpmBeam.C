@@ -89,7 +89,13 @@ scalar deficit(const deficitFit (&fit)[N], const scalar nu, const scalar n)
 // member's own thickness, clamp roots corrected): |EI_lattice/EI - 1| =
 // (a/n^3)/(1 + a/n^3), an envelope of the benchmarks/vcpmThinMembers table
 // (docs/vcpm.md "Surface correction", 2026-11-25). Plane stress at every
-// nu, and plane strain to nu = 0.4: within 0.3 % for n = 3..16, a = 0.1.
+// nu, and plane strain to nu = 0.4: a = 0.1 (0.37 % at n = 3, where the
+// error is largest and soft). Against Timoshenko the lattice is within
+// 0.35 % for n = 3..16 in plane stress and in plane strain to nu = 0.3,
+// within 0.7 % to 0.4 (-0.35 ... -0.67 % stiff at n = 8..16); that stiff
+// part at many layers is 2D elasticity's own clamp stiffening (a fixed
+// section cannot contract sideways; finite elements give it too,
+// docs/vcpm.md), not the lattice's, and a does not cover it.
 // Plane strain above 0.4 the volumetric term grows and the affine
 // calibration weakens (gamma floored at 0 from nu = 0.48 at few layers):
 // a rises to cover 1.8 % at n = 3 (nu = 0.45), 3.0 % (0.46), 5.3 % (0.47),
