@@ -40,12 +40,17 @@ bodyTable()
 
 # maxDifference <tableA> <tableB>: the largest absolute difference of the
 # value columns of two bodyTables (ids must match row by row; "ids differ"
-# otherwise).
+# otherwise). nan when a value is not a finite number or no row was read
+# (two missing or empty tables do not agree), so that a check of the result
+# with isFinite (testLib.sh) fails.
 maxDifference()
 {
-    paste -d ' ' "$1" "$2" | awk '
-        { n = NF/2; if ($1 != $(n+1)) { print "ids differ"; exit 1 }
-          for (i = 2; i <= n; i++) { d = $i - $(n+i); if (d < 0) d = -d;
-                                     if (d > m) m = d } }
-        END { printf "%.3g\n", m + 0 }'
+    paste -d ' ' "$1" "$2" | awk "$awkFinite"'
+        { n = NF/2; if (NF % 2 || $1 != $(n+1)) { differ = 1; exit 1 }
+          rows++
+          for (i = 2; i <= n; i++) {
+              if (!finite($i) || !finite($(n+i))) { bad = 1; continue }
+              d = $i - $(n+i); if (d < 0) d = -d; if (d > m) m = d } }
+        END { if (differ) { print "ids differ"; exit 1 }
+              if (!rows || bad) print "nan"; else printf "%.3g\n", m + 0 }'
 }

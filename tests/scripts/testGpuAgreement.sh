@@ -13,8 +13,9 @@
 
 skipWithoutGpu "the CPU-GPU agreement"
 
-# within <a> <b> <tolerance>: |a - b| <= tolerance (numbers from awk)
-within() { awk -v d="$1" -v t="$2" 'BEGIN { exit !(d == d + 0 && d <= t) }'; }
+# within <difference> <tolerance>: a finite difference <= tolerance (a nan
+# one, from a non-finite value or tables with no rows, fails)
+within() { isFinite "$1" "v <= $2"; }
 
 # runBoth <name> <case source> <endTime> [<time scheme>]: the case run to
 # endTime on each device, ascii at 17 digits, written only at the end;
@@ -72,11 +73,14 @@ compareHistory()
     local a="$scratch/$name.cpu/postProcessing/$file" b="$scratch/$name.cuda/postProcessing/$file"
     check "$name: both wrote $file" [ -s "$a" -a -s "$b" ]
     local diff
-    diff=$(paste -d ' ' <(grep -v '^#' "$a") <(grep -v '^#' "$b") | awk '
-        { n = NF/2; for (i = 1; i <= n; i++) {
+    diff=$(paste -d ' ' <(grep -v '^#' "$a") <(grep -v '^#' "$b") | awk "$awkFinite"'
+        { n = NF/2; rows++; if (NF % 2) bad = 1
+          for (i = 1; i <= n; i++) {
+            if (!finite($i) || !finite($(n+i))) { bad = 1; continue }
             d = $i - $(n+i); if (d < 0) d = -d; if (d > m[i]) m[i] = d
             s = $i < 0 ? -$i : $i; if (s > big[i]) big[i] = s } }
-        END { for (i in m) if (big[i] > 0 && m[i]/big[i] > r) r = m[i]/big[i]
+        END { if (!rows || bad) { print "nan"; exit }
+              for (i in m) if (big[i] > 0 && m[i]/big[i] > r) r = m[i]/big[i]
               printf "%.3g\n", r + 0 }')
     check "$name: $file agrees (largest relative diff $diff <= $tolerance)" \
         within "$diff" "$tolerance"

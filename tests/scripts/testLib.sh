@@ -12,6 +12,24 @@ singleBuild() { grep -q "(single precision)" "$1"; }
 pass() { nPassed=$((nPassed + 1)); echo "PASS: $*"; }
 fail() { nFailed=$((nFailed + 1)); echo "FAIL: $*"; }
 
+# Finite numbers in awk. The system awk may be mawk, which reads "nan" and
+# "inf" as numbers (x == x + 0 holds for them) and compares nan equal to
+# anything, so neither that test nor a comparison rejects them, and a max
+# accumulator "if (d > m) m = d" drops a NaN row silently. awkFinite is the
+# text of an awk function finite(v), true when v reads as a finite decimal
+# number (the test of checkValue in bin/tools/RunFunctions; a computed
+# number converts through CONVFMT, nan and inf to words); put it before a
+# program:   awk "$awkFinite"'{ if (!finite($1)) bad++ } ...'
+awkFinite='function finite(v) { return v ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ }
+'
+# isFinite <value> [<awk condition on v>]: value is a finite number (an
+# empty, nan or inf one is not) and the condition holds, e.g.
+#     check "small" isFinite "$d" 'v < 1e-9'
+isFinite()
+{
+    awk -v v="$1" "$awkFinite"'BEGIN { exit !(finite(v) && ('"${2:-1}"')) }'
+}
+
 # check "what" command...: passes when the command succeeds
 check()
 {

@@ -396,12 +396,12 @@ blowUpPair()    # blowUpPair <timeScheme>
     bodyTable "$every/$t" water U rho > "$scratch/written.state"
     d=$(maxDifference "$scratch/undone.state" "$scratch/written.state")
     check "$s: the undone step's velocity and density are the state written before it ($d)" \
-        awk -v d="$d" 'BEGIN { exit !(d == d + 0 && d == 0) }'
+        isFinite "$d" 'v == 0'
     bodyTable "$scratch/c/$t" water position > "$scratch/undone.state"
     bodyTable "$every/$t" water position > "$scratch/written.state"
     d=$(maxDifference "$scratch/undone.state" "$scratch/written.state")
     check "$s: the undone step's positions are the ones written before it, to round-off ($d m)" \
-        awk -v d="$d" 'BEGIN { exit !(d == d + 0 && d < 1e-12) }'
+        isFinite "$d" 'v < 1e-12'
 }
 blowUpPair symplectic
 blowUpPair verlet
