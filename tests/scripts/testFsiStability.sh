@@ -64,7 +64,7 @@ checkCase()
              && sphVcpmFsi > log.sphVcpmFsi 2>&1)
     check "$name: the run ends normally" grep -q '^End' "$c/log.sphVcpmFsi"
     check "$name: no particle removed" bash -c "! grep -q '^Removed' '$c/log.sphVcpmFsi'"
-    local bad=0 t inside umax=0 u
+    local bad=0 t inside umax="" u
     for t in $(cd "$c" && ls -d [0-9]* | grep -v '^0$'); do
         # Finite fluid state, and no fluid inside the plate.
         inside=$(python3 - "$c/$t" <<'PY'
@@ -91,16 +91,24 @@ print(n)
 PY
 )
         [ "$inside" = 0 ] || { bad=$((bad + 1)); echo "    time $t: $inside fluid particles inside the plate (or NaN)"; }
-        u=$(fieldValues "$c/$t/plate/displacement" | awk '{ m2 = $1*$1 + $2*$2; if (m2 > m) m = m2 } END { print sqrt(m) }')
-        umax=$(awk -v a="$umax" -v b="$u" 'BEGIN { print (b > a ? b : a) }')
+        # The largest |displacement|: nan from a non-finite value or no rows
+        # (umax stays empty, and fails, without a written time).
+        u=$(fieldValues "$c/$t/plate/displacement" | awk "$awkFinite"'
+            { if (!finite($1) || !finite($2)) bad = 1; m2 = $1*$1 + $2*$2; if (m2 > m) m = m2 }
+            END { if (!NR || bad) print "nan"; else print sqrt(m) }')
+        umax=$(awk -v a="$umax" -v b="$u" "$awkFinite"'BEGIN {
+            print (a == "" ? b : !finite(a) || !finite(b) ? "nan" : b > a ? b : a) }')
     done
     check "$name: every written state finite, no fluid inside the plate" [ $bad -eq 0 ]
     check "$name: the plate's largest displacement ($umax m) is below its height $H m" \
-        awk -v u="$umax" -v H="$H" 'BEGIN { exit !(u == u + 0 && u < H) }'
+        isFinite "$umax" "v < $H"
     local e=postProcessing/energy/0/energy.dat
-    check "$name: fluid energy never above its start by more than 1 %" awk '
-        !/^#/ { E = $3 + $4; if (n++ == 0) E0 = E; if (E > Emax) Emax = E }
-        END { d = (Emax - E0)/(E0 < 0 ? -E0 : E0); printf "    max rise %.3g of the start\n", d; exit !(d <= 0.01) }' "$c/$e"
+    # The largest rise: nan from a non-finite row or a table without rows.
+    check "$name: fluid energy never above its start by more than 1 %" awk "$awkFinite"'
+        !/^#/ { if (!finite($3) || !finite($4)) bad = 1; E = $3 + $4
+                if (n++ == 0) E0 = Emax = E; if (E > Emax) Emax = E }
+        END { d = (!n || bad || E0 == 0) ? "nan" : (Emax - E0)/(E0 < 0 ? -E0 : E0)
+              printf "    max rise %.3g of the start\n", d; exit !(finite(d) && d <= 0.01) }' "$c/$e"
     grep -E "solid steps per fluid step" "$c/log.sphVcpmFsi" | sed "s/^ */    $name: /"
 }
 
