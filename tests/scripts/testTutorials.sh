@@ -26,6 +26,23 @@ expectedCount()
         sluiceGate3D/water)      echo $((24*8*20)) ;;
         sluiceGate3D/gate)       echo $((6*16*56)) ;;                     # dp/2: 6 layers
         sluiceGate3D/flume)      echo $((74*14*35 - 68*8*32 + 3*14*16 + 2*24*3*16)) ;;  # + raised end
+        damBreakElasticGate3D/water) echo $((50*10*70)) ;;
+        damBreakElasticGate3D/gate)  echo $((5*20*160)) ;;               # dp/2
+        damBreakElasticGate3D/tank)  echo $((181*16*83 - 175*10*80)) ;;  # 3 layers, open top
+        # The same boxes from STL (docs/geometry.md); surfaceLayers round
+        # the tank's rim, so its count is the one measured there.
+        damBreakElasticGateStl3D/water) echo $((50*10*70)) ;;
+        damBreakElasticGateStl3D/gate)  echo $((5*20*160)) ;;
+        damBreakElasticGateStl3D/tank)  echo 102666 ;;
+        # The default dictionaries (dp 4 mm; lattice from x = 0.0005 m: 153
+        # columns over the 0.612 m, the plate's one left out of the oil;
+        # walls 86 rows up the 0.3445 m)
+        rollingTank2D/plate)    echo $((4*115)) ;;                     # dp/4
+        rollingTank2D/oil)      echo $((152*29)) ;;
+        rollingTank2D/tank)     echo $((159*89 - 153*86)) ;;           # 3 layers, open top
+        rollingTank3D/plate)    echo $((4*40*115)) ;;
+        rollingTank3D/oil)      echo $((152*10*29)) ;;
+        rollingTank3D/tank)     echo $((159*16*89 - 153*10*86)) ;;
         rollingTank3DCoarse/plate)    echo $((3*15*42)) ;;               # dp/3, 8 mm thick
         rollingTank3DCoarse/oil)      echo $((38*5*14)) ;;
         rollingTank3DCoarse/oilRight) echo $((37*5*14)) ;;
