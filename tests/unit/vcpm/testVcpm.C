@@ -1125,6 +1125,9 @@ TEST(vcpmSolid, staticCantileverSetAUncorrected)
                 "Timoshenko %.5e (%+.2f %%), EI ratio %.4f, predicted %.4f, "
                 "w/(predicted) %+.2f %%\n", n, c.w, wT, 100*(c.w/wT - 1),
                 ratio, predicted, 100*(c.w/wCorrected - 1));
+    // A regression pin of the plain lattice's measured softness (docs/
+    // vcpm.md), then the physics check: corrected by the error model, the
+    // deflection is beam theory's.
     EXPECT_NEAR(c.w/wT - 1, 0.1866, 0.005);
     EXPECT_NEAR(c.w/wCorrected, 1, 0.01);
 }
@@ -1153,6 +1156,9 @@ TEST(vcpmSolid, thinMemberStiffnessError)
         }
         EXPECT_EQ(thinMemberStiffnessError(1, 0.3, pStress, surface), -1);
     }
+    // Regression pins: the fit against two measured rows of docs/vcpm.md
+    // (EI_lattice/EI of the plain lattice, vcpmThinMembers), so that a
+    // change of the fit's constants shows.
     EXPECT_NEAR(thinMemberStiffnessError(4, 0.3, pStress, false),
                 0.7632 - 1, 0.005);
     EXPECT_NEAR(thinMemberStiffnessError(8, 0.0, pStress, false),
