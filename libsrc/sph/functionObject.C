@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 #include "functionObject.H"
 #include "functionObjects.H"
+#include "dictionaryParser.H"
 #include "error.H"
 #include "formatting.H"
 
@@ -170,9 +171,13 @@ std::vector<std::string> functionObject::selectEntries(
     {
         if (!fns.findEntry(name))
         {
+            const std::string near =
+                dictionaryDetail::closest(name, fns.keys());
             fatalIOError(functions->file(), functions->line(),
                 "Function object '" + name + "' is not in functions {};"
-                " its entries are " + str(fns.keys()), name);
+                " its entries are " + str(fns.keys())
+                + (near.empty() ? "" : " (did you mean '" + near + "'?)"),
+                name);
         }
     }
 

@@ -115,7 +115,7 @@ mistake()
     expectIn "$what: the error" "$scratch/log.mistake" "$pattern"
 }
 mistake "-func of no entry" \
-    "Function object 'tipp' is not in functions \{\}; its entries are \(tip levels tankForce plateForce probe energy front spare\)" \
+    "Function object 'tipp' is not in functions \{\}; its entries are \(tip levels tankForce plateForce probe energy front spare\) \(did you mean 'tip'\?\)" \
     -postProcess -func tipp
 printf 'functions { }\n' > "$c/system/emptyDict"
 mistake "-dict with no entries" "has no enabled entry to evaluate" -postProcess -dict system/emptyDict

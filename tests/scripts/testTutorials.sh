@@ -14,6 +14,16 @@ expectedCount()
         hydrostaticTank2D/water) echo $((100*50)) ;;
         hydrostaticTank2D/tank)  echo $((106*83 - 100*80)) ;;   # 3 layers, open top
         hydrostaticTank3D/water) echo $((15*15*10)) ;;
+        damBreak2D/water)        echo $((40*80)) ;;                  # a/40
+        damBreak2D/tank)         echo $((246*99 - 240*96)) ;;        # 3 layers, open top
+        damBreakLobovsky2D/water) echo $((86*43)) ;;                 # 0.6 m = 85.7 dp
+        damBreakLobovsky2D/tank)  echo $((236*146 - 230*143)) ;;
+        damBreakElasticGate2D/water) echo $((100*140)) ;;
+        damBreakElasticGate2D/gate)  echo $((5*160)) ;;
+        damBreakElasticGate2D/tank)  echo $((506*203 - 500*200)) ;;
+        hydrostaticPlate2D/water) echo $((100*200)) ;;
+        hydrostaticPlate2D/plate) echo $((106*5)) ;;                 # 3 layers into each support
+        hydrostaticPlate2D/walls) echo $((2*3*220)) ;;
         hydrostaticTank3D/tank)  echo $((21*21*18 - 15*15*15)) ;;
         damBreak3D/water)        echo $((40*67*30)) ;;
         waveFlume2D/water)       echo $((400*25)) ;;
