@@ -2,6 +2,7 @@
 #include "error.H"
 #include "formatting.H"
 #include "foamFile.H"
+#include "progressEstimate.H"
 #include "version.H"
 
 #include <chrono>
@@ -212,6 +213,38 @@ std::string executionTimeLine()
     std::ostringstream os;
     os << "ExecutionTime = " << std::setprecision(6) << cpu
        << " s  ClockTime = " << std::llround(wall) << " s";
+    return os.str();
+}
+
+double progressEstimate::secondsLeft(const double dTime, const double dWall,
+                                     const double time, const double endTime)
+{
+    if (!(dTime > 0) || !(dWall >= 0) || !(endTime > time)) return -1;
+    return dWall*(endTime - time)/dTime;
+}
+
+std::string progressEstimate::durationText(const double seconds)
+{
+    const long long s = std::llround(seconds);
+    std::ostringstream os;
+    if (s < 60) os << s << " s";
+    else if (s < 3600) os << s/60 << " min " << s%60 << " s";
+    else os << s/3600 << " h " << (s%3600)/60 << " min";
+    return os.str();
+}
+
+std::string progressEstimate::line(const double time, const double endTime)
+{
+    const double wall = std::chrono::duration<double>(
+        std::chrono::steady_clock::now() - wallStart).count();
+    const double left = lastWall_ < 0 ? -1
+        : secondsLeft(time - lastTime_, wall - lastWall_, time, endTime);
+    lastWall_ = wall;
+    lastTime_ = time;
+    if (left < 0) return "";
+    std::ostringstream os;
+    os << "Time left = about " << durationText(left) << " to endTime "
+       << endTime;
     return os.str();
 }
 

@@ -231,7 +231,9 @@ void solidOnlySolver::run()
                 << "Step = " << timeIndex_ << "  deltaT = "
                 << std::setprecision(4) << deltaT_ << std::setprecision(6)
                 << "  kinetic energy = " << kinetic << " J\n"
-                << executionTimeLine() << "\n" << std::endl;
+                << executionTimeLine() << "\n";
+            const std::string left = progress_.line(time_, control_.endTime);
+            log_<< (left.empty() ? "" : left + "\n") << std::endl;
         }
         if (stopNow)
         {

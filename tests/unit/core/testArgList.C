@@ -6,6 +6,7 @@
 // word-list and number options; warnings given once when asked.
 
 #include "argList.H"
+#include "progressEstimate.H"
 #include "dictionary.H"
 #include "error.H"
 #include "../testTools.H"
@@ -237,4 +238,26 @@ TEST(warning, onlyOnceWhenAsked)
     EXPECT_EQ(count("the same\nfile: a/file at line 3"), 3u) << text;
     EXPECT_EQ(count("once\nfile: a/file at line 3"), 2u) << text;
     EXPECT_EQ(count("once\nfile: a/file at line 4"), 1u) << text;
+}
+
+
+// The log's time left: the simulated time to go at the pace between two
+// reports, in words; none at the first report or at endTime.
+TEST(progressEstimate, timeLeft)
+{
+    // 0.01 s simulated in 2 s of wall clock, 0.3 s to go: 60 s.
+    EXPECT_DOUBLE_EQ(progressEstimate::secondsLeft(0.01, 2, 0.1, 0.4), 60);
+    EXPECT_LT(progressEstimate::secondsLeft(0, 2, 0.1, 0.4), 0);
+    EXPECT_LT(progressEstimate::secondsLeft(0.01, 2, 0.4, 0.4), 0);
+    EXPECT_LT(progressEstimate::secondsLeft(0.01, 2, 0.5, 0.4), 0);
+    EXPECT_EQ(progressEstimate::durationText(45.4), "45 s");
+    EXPECT_EQ(progressEstimate::durationText(320), "5 min 20 s");
+    EXPECT_EQ(progressEstimate::durationText(7385), "2 h 3 min");
+
+    progressEstimate p;
+    EXPECT_EQ(p.line(0.1, 0.4), "");            // the first report
+    const std::string second = p.line(0.2, 0.4);
+    EXPECT_EQ(second.rfind("Time left = about ", 0), 0u) << second;
+    EXPECT_NE(second.find(" to endTime 0.4"), std::string::npos) << second;
+    EXPECT_EQ(p.line(0.4, 0.4), "");            // at endTime
 }
