@@ -152,6 +152,31 @@ struct latticeCase
     bool surface = false;       // surface correction
 };
 
+// The largest difference between the solid's forces at its current
+// positions and -dU/dx by central differences of step 1e-6 l0, relative
+// to the largest force.
+scalar forceGradientError(vcpmSolid& s, const scalar l0, const int nDim)
+{
+    s.computeForces(serialExec{});
+    const std::vector<vec3> f = s.force;
+    const scalar h = 1e-6*l0;
+    scalar maxErr = 0;
+    for (label p = 0; p < s.size(); ++p)
+    {
+        for (int d = 0; d < nDim; ++d)
+        {
+            const scalar x0 = s.position[p][d];
+            s.position[p][d] = x0 + h;
+            const scalar Up = s.elasticEnergy(serialExec{});
+            s.position[p][d] = x0 - h;
+            const scalar Um = s.elasticEnergy(serialExec{});
+            s.position[p][d] = x0;
+            maxErr = std::max(maxErr, std::abs(-(Up - Um)/(2*h) - f[p][d]));
+        }
+    }
+    return maxErr/maxMag(f);
+}
+
 } // End anonymous namespace
 
 
@@ -307,25 +332,7 @@ TEST_P(vcpmLatticeCases, forceIsMinusEnergyGradient)
     const vcpmMaterial m = material(c.lattice, c.plane, c.nu, 0.01, c.surface);
     vcpmSolid s = makeSolid(m, 5, 4, 4);
     perturb(s.position, 0.05*m.l0, m.nDim(), 7);
-    s.computeForces(serialExec{});
-    const std::vector<vec3> f = s.force;
-
-    const scalar h = 1e-6*m.l0;
-    scalar maxErr = 0;
-    for (label p = 0; p < s.size(); ++p)
-    {
-        for (int d = 0; d < m.nDim(); ++d)
-        {
-            const scalar x0 = s.position[p][d];
-            s.position[p][d] = x0 + h;
-            const scalar Up = s.elasticEnergy(serialExec{});
-            s.position[p][d] = x0 - h;
-            const scalar Um = s.elasticEnergy(serialExec{});
-            s.position[p][d] = x0;
-            maxErr = std::max(maxErr, std::abs(-(Up - Um)/(2*h) - f[p][d]));
-        }
-    }
-    const scalar rel = maxErr/maxMag(f);
+    const scalar rel = forceGradientError(s, m.l0, m.nDim());
     std::printf("force vs -dU/dx: max relative error %.2e\n", rel);
     EXPECT_LT(rel, 1e-8);
 }
@@ -818,25 +825,7 @@ TEST(vcpmClampRoots, forceIsMinusEnergyGradientAndRigidMotionIsFree)
         ASSERT_GT(roots, 0);
 
         perturb(s.position, 0.05*m.l0, m.nDim(), 17);
-        s.computeForces(serialExec{});
-        const std::vector<vec3> f = s.force;
-        const scalar h = 1e-6*m.l0;
-        scalar maxErr = 0;
-        for (label p = 0; p < s.size(); ++p)
-        {
-            for (int d = 0; d < m.nDim(); ++d)
-            {
-                const scalar x0 = s.position[p][d];
-                s.position[p][d] = x0 + h;
-                const scalar Up = s.elasticEnergy(serialExec{});
-                s.position[p][d] = x0 - h;
-                const scalar Um = s.elasticEnergy(serialExec{});
-                s.position[p][d] = x0;
-                maxErr = std::max(maxErr,
-                                  std::abs(-(Up - Um)/(2*h) - f[p][d]));
-            }
-        }
-        const scalar rel = maxErr/maxMag(f);
+        const scalar rel = forceGradientError(s, m.l0, m.nDim());
         std::printf("clamp roots, %s: force vs -dU/dx max relative error "
                     "%.2e\n", lat == sc ? "3D" : "2D", rel);
         EXPECT_LT(rel, 1e-8);
