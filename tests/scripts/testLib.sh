@@ -12,18 +12,9 @@ singleBuild() { grep -q "(single precision)" "$1"; }
 pass() { nPassed=$((nPassed + 1)); echo "PASS: $*"; }
 fail() { nFailed=$((nFailed + 1)); echo "FAIL: $*"; }
 
-# Finite numbers in awk. The system awk may be mawk, which reads "nan" and
-# "inf" as numbers (x == x + 0 holds for them) and compares nan equal to
-# anything, so neither that test nor a comparison rejects them, and a max
-# accumulator "if (d > m) m = d" drops a NaN row silently. awkFinite is the
-# text of an awk function finite(v), true when v reads as a finite decimal
-# number (the test of checkValue in bin/tools/RunFunctions; a computed
-# number converts through CONVFMT, nan and inf to words); put it before a
-# program:   awk "$awkFinite"'{ if (!finite($1)) bad++ } ...'
-awkFinite='function finite(v) { return v ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ }
-'
 # isFinite <value> [<awk condition on v>]: value is a finite number (an
-# empty, nan or inf one is not) and the condition holds, e.g.
+# empty, nan or inf one is not; awkFinite of bin/tools/RunFunctions, sourced
+# below) and the condition holds, e.g.
 #     check "small" isFinite "$d" 'v < 1e-9'
 isFinite()
 {
@@ -74,6 +65,9 @@ export SPHVCPM_DIR
 # SPHVCPM_APPBIN: the build's applications (platforms/bin-single for a
 # single-precision build, set by CTest).
 export PATH="${SPHVCPM_APPBIN:-$SPHVCPM_DIR/platforms/bin}:$SPHVCPM_DIR/bin:$PATH"
+# awkFinite, the finite-number test in awk that the tutorials' checks use
+# too, with the rest of the Allruns' functions.
+. "$SPHVCPM_DIR/bin/tools/RunFunctions"
 
 # skipWithoutGpu <what>: exits 77 (skipped) when sphVcpmFsi cannot use a
 # GPU here, saying why (a short run of the coarse dam break asks for one).
