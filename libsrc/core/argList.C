@@ -244,7 +244,7 @@ std::string progressEstimate::line(const double time, const double endTime)
     if (left < 0) return "";
     std::ostringstream os;
     os << "Time left = about " << durationText(left) << " to endTime "
-       << endTime;
+       << endTime << "\n";
     return os.str();
 }
 

@@ -1397,12 +1397,11 @@ void fsiSolver::run()
                 std::chrono::steady_clock::now() - outputStart).count();
             ++nInteractionSamples_;
             reportRemoved();
-            const std::string left = progress_.line(time_, control_.endTime);
             log_<< "Time = " << schedule_->name(time_) << "\n"
                 << "Step = " << timeIndex_ << "  deltaT = "
                 << str(deltaT_, 4) << "  particles = " << particles_.size()
                 << "\n" << executionTimeLine() << "\n"
-                << (left.empty() ? "" : left + "\n") << std::endl;
+                << progress_.line(time_, control_.endTime) << std::endl;
         }
         else
         {

@@ -231,9 +231,8 @@ void solidOnlySolver::run()
                 << "Step = " << timeIndex_ << "  deltaT = "
                 << std::setprecision(4) << deltaT_ << std::setprecision(6)
                 << "  kinetic energy = " << kinetic << " J\n"
-                << executionTimeLine() << "\n";
-            const std::string left = progress_.line(time_, control_.endTime);
-            log_<< (left.empty() ? "" : left + "\n") << std::endl;
+                << executionTimeLine() << "\n"
+                << progress_.line(time_, control_.endTime) << std::endl;
         }
         if (stopNow)
         {

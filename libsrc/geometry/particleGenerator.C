@@ -481,6 +481,7 @@ void particleGenerator::checkSolid
         if (std::abs(error) > thinMemberTolerance)
         {
             const vec3 p = toVec3(body.position()[members.where]);
+            const scalar needed = spec.dp*members.thinnestLayers/minLayers;
             std::ostringstream os;
             os.precision(3);
             os << what << ": its thinnest member is "
@@ -491,11 +492,9 @@ void particleGenerator::checkSolid
                << 100*thinMemberTolerance << " % at nu = "
                << spec.material->nu << " (surface correction "
                << (spec.material->surfaceCorrection ? "on" : "off")
-               << "): refine dp to at most "
-               << spec.dp*members.thinnestLayers/minLayers << " m";
+               << "): refine dp to at most " << needed << " m";
             // A solid's dp is the top-level dp over 1 to 4: name the
             // coarsest of those that is fine enough, if one is.
-            const scalar needed = spec.dp*members.thinnestLayers/minLayers;
             label r = 1;
             while (r <= 4 && dp_/r > needed*(1 + 1e-9)) ++r;
             if (r <= 4)

@@ -28,14 +28,9 @@ std::int64_t cellKey(const std::int64_t a, const std::int64_t b,
 } // End anonymous namespace
 
 
-bondList::bondList(const std::vector<point>& X, const scalar l0,
-                   const bool surfaceCorrection, const scalar gamma)
+bondList::bondList(const std::vector<point>& X, const scalar l0)
 {
     build(X, l0);
-    if (surfaceCorrection)
-    {
-        correctSurfaces(X, l0, [gamma](label) { return gamma; });
-    }
 }
 
 

@@ -118,7 +118,7 @@ scalar surfaceShift(const vcpmMaterial& m, const label nLayers)
     const vcpmConstants c{{2*m.k1, 2*m.k2}, {m.T, m.T}};
     auto energy = [&](const scalar gamma)
     {
-        const bondList b(X, l0, true, gamma);
+        const bondList b(X, l0, [gamma](label) { return gamma; }, {});
         std::vector<scalar> S(2*X.size());
         parallelFor(serialExec{}, label(X.size()),
                     stretchSumOp{b.view(), x.data(), S.data()});

@@ -258,6 +258,6 @@ TEST(progressEstimate, timeLeft)
     EXPECT_EQ(p.line(0.1, 0.4), "");            // the first report
     const std::string second = p.line(0.2, 0.4);
     EXPECT_EQ(second.rfind("Time left = about ", 0), 0u) << second;
-    EXPECT_NE(second.find(" to endTime 0.4"), std::string::npos) << second;
+    EXPECT_NE(second.find(" to endTime 0.4\n"), std::string::npos) << second;
     EXPECT_EQ(p.line(0.4, 0.4), "");            // at endTime
 }

@@ -1357,7 +1357,7 @@ TEST(vcpmSurfaceCorrection, uniformStrainEnergyOnFaces)
                     X[i] + e[i][0]*X.x + e[i][1]*X.y + e[i][2]*X.z;
             }
         }
-        const bondList b(s.reference(), m.l0, true, 0);
+        const bondList b(s.reference(), m.l0, [](label) { return 0.0; }, {});
         parallelFor(serialExec{}, s.size(), stretchSumOp{b.view(),
             s.position.data(), s.stretchSum.data()});
         const elasticEnergyOp U{b.view(), s.constants(),
