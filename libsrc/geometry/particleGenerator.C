@@ -835,10 +835,9 @@ scalar particleGenerator::interfaceGapExcess
 
 void particleGenerator::write() const
 {
-    writeTimeDirectory(caseDir_, timeState(), bodies_, format_, precision_);
-
     // A restart (startFrom latestTime) goes on from a later time, not from
     // this 0/; the solids' reference lattice must stay the one it ran from.
+    // Said before 0/ is replaced, so that an interrupted write still says it.
     std::string later;
     for (const timeInstant& t : findTimes(caseDir_))
     {
@@ -848,9 +847,11 @@ void particleGenerator::write() const
     {
         warning("The case has later time directories:" + later + ". The"
             " solver goes on from the latest of them (startFrom latestTime),"
-            " not from this 0/, and refuses a solid whose 0/ has changed:"
-            " remove them for a fresh start");
+            " not from the 0/ written now, and refuses a solid whose 0/ has"
+            " changed: remove them for a fresh start");
     }
+
+    writeTimeDirectory(caseDir_, timeState(), bodies_, format_, precision_);
 }
 
 } // End namespace sphvcpm
