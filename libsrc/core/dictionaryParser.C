@@ -531,6 +531,16 @@ void dictionaryParser::readEntry(dictionary& dict, tokeniser& tk,
     const bool isPattern = keyTok.type == token::kind::string;
     if (isPattern)
     {
+        // std::regex compiles and matches by recursion: a pattern of tens
+        // of thousands of characters overflows the stack instead of failing.
+        constexpr std::size_t maxPatternLength = 1000;
+        if (key.size() > maxPatternLength)
+        {
+            fatalIOError(tk.file(), keyTok.line, "A quoted keyword is a"
+                " regular expression; this one \"" + clip(key) + "\" has "
+                + std::to_string(key.size()) + " characters, more than the "
+                + std::to_string(maxPatternLength) + " allowed", key);
+        }
         try
         {
             dictionaryDetail::checkRegex(key);

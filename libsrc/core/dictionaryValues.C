@@ -628,6 +628,23 @@ T dictionary::getDimensioned(const std::string& key,
 }
 
 
+void dictionary::checkDimensionsEntry(const std::string& key,
+                                      const dimensionSet& dims) const
+{
+    const entry& e = valueEntry(*this, key, "dimensions [...]");
+    valueReader r(e.tokens(), key, e.file(), e.line(),
+                  topDict().fewestVectorComponents_);
+    const dimensionSet found = r.readDimensions();
+    r.expectEnd();
+    if (found != dims)
+    {
+        fatalIOError(e.file(), e.line(), "Keyword '"
+            + dictionaryDetail::clip(key) + "': dimensions do not match:"
+            " expected " + dims.str() + ", found " + found.str(), key);
+    }
+}
+
+
 std::string dictionary::getWord(const std::string& key,
                                 const std::vector<std::string>& allowed) const
 {

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <filesystem>
 #include <iostream>
 #include <mutex>
 #include <new>
@@ -152,5 +153,19 @@ int runGuarded(const std::function<int()>& body)
     }
     return 1;
 }
+
+std::string fileProblem(const std::string& path)
+{
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (std::filesystem::is_regular_file(status)) return "";
+    if (!std::filesystem::exists(status)) return "does not exist";
+    if (std::filesystem::is_directory(status))
+    {
+        return "is a directory, not a file";
+    }
+    return "is not a regular file";
+}
+
 
 } // End namespace sphvcpm

@@ -19,6 +19,10 @@ vec3 readGravity(const std::filesystem::path& caseDir, const int nDimensions)
     dictionary dict = dictionary::fromFile(file);
     dict.setCaseDimensions(nDimensions);
     dict.checkKeywords({"dimensions", "value"});
+    if (dict.found("dimensions"))
+    {
+        dict.checkDimensionsEntry("dimensions", dimensions::acceleration());
+    }
     const vec3 g = dict.getDimensioned<vec3>("value",
                                              dimensions::acceleration());
     if (nDimensions == 2 && g.z != 0)

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 #include "timeControl.H"
 #include "error.H"
+#include "formatting.H"
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +57,23 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
     }
     tc.deltaT = d.getPositive("deltaT");
     tc.adjustTimeStep = d.getOrDefault<bool>("adjustTimeStep", true);
+    if (tc.deltaT > tc.endTime)
+    {
+        // minDeltaT defaults to deltaT*1e-6: say what is wrong here rather
+        // than through a floor above every step.
+        d.fatalAt("deltaT", "deltaT " + str(tc.deltaT) + " s is longer than"
+            " endTime " + str(tc.endTime) + " s; deltaT is the first step"
+            " (adjustTimeStep yes) or every step (no)");
+    }
+    constexpr double maxFixedSteps = 1e9;
+    if (!tc.adjustTimeStep && tc.endTime/tc.deltaT > maxFixedSteps)
+    {
+        d.fatalAt("deltaT", "adjustTimeStep no with deltaT " + str(tc.deltaT)
+            + " s would take " + str(tc.endTime/tc.deltaT) + " steps to"
+            " endTime " + str(tc.endTime) + " s (more than "
+            + str(maxFixedSteps) + "): raise deltaT, or set adjustTimeStep"
+            " yes for the stable step");
+    }
     tc.maxCo = d.getOrDefault<double>("maxCo", 0.2);
     if (!(tc.maxCo > 0 && tc.maxCo <= 1))
     {

@@ -57,10 +57,11 @@ particleGenerator::particleGenerator
     caseDir_(caseDir),
     dictFile_(dictFile.is_absolute() ? dictFile : caseDir/dictFile)
 {
-    if (!fs::is_regular_file(dictFile_))
+    const std::string problem = fileProblem(dictFile_.string());
+    if (!problem.empty())
     {
-        fatalError("Cannot find the particle generation dictionary "
-            + dictFile_.string() + "\nIt describes the bodies to fill:"
+        fatalError("The particle generation dictionary "
+            + dictFile_.string() + " " + problem + "\nIt describes the bodies to fill:"
               " nDimensions, dp and bodies { <name> { type fluid|wall|solid;"
               " shapes { ... } } }");
     }

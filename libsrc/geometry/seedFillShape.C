@@ -70,7 +70,7 @@ void seedFillShape::fill
     // -g: up the y axis in 2D, the z axis in 3D.
     vec3 up = dict.getOrDefault<vec3>("up",
         nDim == 2 ? vec3{0, 1, 0} : vec3{0, 0, 1});
-    if (!(mag(up) > 0) || !std::isfinite(mag(up)))
+    if (!(mag(unitVector(up)) > 0))
     {
         dict.fatalAt("up", "Keyword 'up': expected a finite, non-zero"
             " vector (the direction opposite to gravity), e.g. "
@@ -81,7 +81,7 @@ void seedFillShape::fill
         dict.fatalAt("up", "Keyword 'up': in 2D the direction opposite to"
             " gravity lies in the plane z = 0: give (x y)");
     }
-    up = up/mag(up);
+    up = unitVector(up);
     const bool hasLevel = dict.found("level");
     const scalar level = dict.getOrDefault<scalar>("level", 0);
     if (!std::isfinite(level))

@@ -355,9 +355,10 @@ stlData parseSTL(const char* data, std::size_t size,
 stlData readSTL(const std::filesystem::path& file)
 {
     const std::string name = file.string();
-    if (!std::filesystem::is_regular_file(file))
+    const std::string problem = fileProblem(name);
+    if (!problem.empty())
     {
-        fatalIOError(name, 0, "Cannot find the STL file " + name);
+        fatalIOError(name, 0, "The STL file " + name + " " + problem);
     }
 
     gzFile in = gzopen(name.c_str(), "rb");

@@ -94,10 +94,11 @@ stlDetail::surfaceInput stlDetail::readSurface
     const std::filesystem::path file = dict.get<std::string>("file");
     const std::filesystem::path path =
         file.is_absolute() || caseDir.empty() ? file : caseDir/file;
-    if (!std::filesystem::is_regular_file(path))
+    const std::string problem = fileProblem(path.string());
+    if (!problem.empty())
     {
-        dict.fatalAt("file", "Keyword 'file': shape '" + name + "' cannot"
-            " find the STL file " + path.string()
+        dict.fatalAt("file", "Keyword 'file': shape '" + name + "': the STL"
+            " file " + path.string() + " " + problem
           + (file.is_absolute() ? "" : " (a relative file is taken from the"
              " case directory)"));
     }
@@ -118,9 +119,9 @@ stlDetail::surfaceInput stlDetail::readSurface
     {
         const dictionary& rot = dict.subDict("rotate");
         rot.checkKeywords({"axis", "angle"});
-        axis = rot.get<vec3>("axis");
+        axis = unitVector(rot.get<vec3>("axis"));
         angle = rot.get<scalar>("angle");
-        if (!(mag(axis) > 0) || !std::isfinite(mag(axis)))
+        if (!(mag(unitVector(axis)) > 0))
         {
             rot.fatalAt("axis", "Keyword 'axis': the rotation axis must be a"
                 " finite, non-zero vector, e.g. (0 0 1)");

@@ -17,27 +17,43 @@ namespace
 // Below this length a direction is taken to be a mistake, not a choice.
 constexpr scalar smallLength = 1e-12;
 
+// v at unit length, or "" when it gives no direction (why, otherwise).
+std::string directionProblem(const vec3& v)
+{
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    {
+        return "a vector that is not finite gives no direction";
+    }
+    if (!(mag(unitVector(v)) > 0) || !(std::fmax(std::fabs(v.x),
+        std::fmax(std::fabs(v.y), std::fabs(v.z))) > smallLength))
+    {
+        return "a zero vector gives no direction";
+    }
+    return "";
+}
+
 vec3 normalised(const vec3& v, const std::string& what)
 {
-    const scalar m = mag(v);
-    if (!(m > smallLength))
+    const std::string problem = directionProblem(v);
+    if (!problem.empty())
     {
-        throw FatalError("Rigid motion: " + what + " is a zero vector; it"
-            " must give a direction", "", 0, what);
+        throw FatalError("Rigid motion: " + what + ": " + problem, "", 0,
+            what);
     }
-    return v/m;
+    return unitVector(v);
 }
 
 // v normalised, or a FatalError at the keyword's line.
 vec3 readDirection(const dictionary& dict, const std::string& key)
 {
     const vec3 v = dict.get<vec3>(key);
-    if (!(mag(v) > smallLength))
+    const std::string problem = directionProblem(v);
+    if (!problem.empty())
     {
         dict.fatalAt(key, "Keyword '" + key + "' in dictionary \""
-            + dict.name() + "\": a zero vector gives no direction");
+            + dict.name() + "\": " + problem);
     }
-    return v/mag(v);
+    return unitVector(v);
 }
 
 } // End anonymous namespace

@@ -559,7 +559,11 @@ void timeFunction::readTable
                 + numberText(t) + " is not greater than the time "
                 + numberText(lastTime) + " of line "
                 + std::to_string(lastLine) + "; times must increase"
-                  " strictly", timeName);
+                  " strictly"
+                + (named && filter.empty() ? std::string(". A table of"
+                   " several series (one per case in a column) needs"
+                   " select { <column> <text>; } to pick one") : ""),
+                timeName);
         }
         times_.push_back(t);
         values_.push_back(scale*v);

@@ -79,6 +79,12 @@ void writeBodyProperties(const fs::path& file, const particleBody& body,
     dict.set("type", bodyTypeName(body.type()));
     dict.set<label>("nDimensions", body.nDimensions());
     dict.set<scalar>("dp", body.dp());
+    if (body.type() == bodyType::solid && body.hasField("clamped"))
+    {
+        // Said here so that a lost clamped file is an error, not a solid
+        // that runs free.
+        dict.set<bool>("clamped", true);
+    }
     dict.writeFile(file, location);
     particleFiles::syncPath(file);
 }
@@ -114,7 +120,7 @@ particleBody readBodyProperties(const fs::path& dir)
             "has one (type, nDimensions, dp)");
     }
     const dictionary dict = dictionary::fromFile(file);
-    dict.checkKeywords({"type", "nDimensions", "dp"});
+    dict.checkKeywords({"type", "nDimensions", "dp", "clamped"});
     const bodyType type =
         bodyTypeFromName(dict.getWord("type", {"fluid", "wall", "solid"}));
     const label nDim = dict.get<label>("nDimensions");
@@ -124,6 +130,15 @@ particleBody readBodyProperties(const fs::path& dir)
             "found " + std::to_string(nDim));
     }
     const scalar dp = dict.getPositive("dp");
+    if (dict.getOrDefault<bool>("clamped", false)
+     && !fs::is_regular_file(dir/"clamped"))
+    {
+        dict.fatalAt("clamped", "Body '" + dir.filename().string() + "' has"
+            " clamped particles (clamped yes in its bodyProperties) but no"
+            " field file \"" + (dir/"clamped").string() + "\": restore it"
+            " (generateParticles writes it), or remove the line for a solid"
+            " without clamps");
+    }
     return particleBody(dir.filename().string(), type, int(nDim), dp);
 }
 

@@ -712,11 +712,11 @@ surgeFront::surgeFront(std::string name, const dictionary& dict,
 {
     dict.checkKeywords(keywords({"direction", "origin"}));
     const vec3 d = dict.get<vec3>("direction");
-    const scalar magD = mag(d);
-    if (!(magD > 0) || !std::isfinite(magD))
+    if (!(mag(unitVector(d)) > 0))
     {
         dict.fatalAt("direction", "Function object '" + this->name()
-            + "': direction must be a non-zero vector, found " + str(d, 10));
+            + "': direction must be a finite, non-zero vector, found "
+            + str(d, 10));
     }
     if (nDimensions == 2 && d.z != 0)
     {
@@ -724,7 +724,7 @@ surgeFront::surgeFront(std::string name, const dictionary& dict,
             + "': in a 2D case the direction lies in the x-y plane (z = 0),"
             " found " + str(d, 10));
     }
-    direction_ = (1/magD)*d;
+    direction_ = unitVector(d);
 }
 
 

@@ -63,6 +63,15 @@ for f in position U displacement stressXX stressXY stressYY stressZZ vonMises cl
     check "0.3/beam/$f written" [ -f "$c/0.3/beam/$f" ]
 done
 
+# A lost clamped file is an error, not a beam that falls free: bodyProperties
+# says the solid has clamps.
+lost="$scratch/lostClamp"
+rm -rf "$lost"; cp -r "$c" "$lost"; rm -rf "$lost"/0.* "$lost/0/beam/clamped"
+sphVcpmFsi -case "$lost" > "$scratch/log.lostClamp" 2>&1
+check "0/beam/clamped deleted: exit status 1" [ $? -eq 1 ]
+expectIn "0/beam/clamped deleted: names the file and the keyword" "$scratch/log.lostClamp" \
+    "Body 'beam' has clamped particles \(clamped yes in its bodyProperties\) but no field file .*0/beam/clamped"
+
 check "no thin-member warning with the correction" \
     bash -c "! grep -q 'thinnest member' '$scratch/log.gen'"
 check "tip deflection within 1 % of Timoshenko" \

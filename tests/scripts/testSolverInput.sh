@@ -104,6 +104,23 @@ expectFatal "a fixed step 25 times the acoustic limit" \
     "adjustTimeStep no with deltaT 0.002 s, above the acoustic limit maxCo h/c0 = " \
     "lower deltaT, or set adjustTimeStep yes"
 
+# deltaT longer than the run (minDeltaT, deltaT*1e-6 by default, would
+# otherwise be blamed on writeInterval); a fixed step that would take more
+# than 1e9 steps (a hang).
+fresh; sed -i 's/^deltaT .*/deltaT 1e300;/' "$scratch/c/system/controlDict"
+expectFatal "deltaT 1e300" "deltaT 1e\+300 s is longer than endTime 0.01 s" \
+    "system/controlDict.* at line"
+fresh; sed -i 's/^deltaT .*/deltaT 1e-300;/; s/^adjustTimeStep .*/adjustTimeStep no;/' "$scratch/c/system/controlDict"
+expectFatal "adjustTimeStep no with deltaT 1e-300" \
+    "adjustTimeStep no with deltaT 1e-300 s would take 1e\+298 steps to endTime 0.01 s"
+
+# constant/g with dimensions that are not an acceleration.
+fresh
+printf 'FoamFile { class uniformDimensionedVectorField; object g; }\ndimensions [1 0 0 0 0 0 0];\nvalue (0 -5 0);\n' \
+    > "$scratch/c/constant/g"
+expectFatal "constant/g with dimensions of a mass" "Keyword 'dimensions': dimensions do not match: expected \[0 1 -2 0 0 0 0\], found \[1 0 0 0 0 0 0\]" \
+    "constant/g at line 2"
+
 # Probes and gauges outside the domain read 0: a warning names them.
 fresh; sed -i '/^functions/,$d' "$scratch/c/system/controlDict"
 cat >> "$scratch/c/system/controlDict" <<'DICT'

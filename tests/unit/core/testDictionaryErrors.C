@@ -616,6 +616,28 @@ TEST(dictionaryLimits, deepNestingIsAnErrorNotACrash)
 }
 
 
+// A quoted keyword is a regular expression, and std::regex recurses: a
+// very long one (100,000 characters, or 20,000 nested groups) overflowed
+// the stack. Refused by length; the longest allowed still compiles.
+TEST(dictionaryLimits, longPatternKeywordIsAnErrorNotACrash)
+{
+    const std::string longPattern = "\"" + std::string(100000, 'a')
+        + "\" 1;\n";
+    expectError(catchFatal([&]{ dictionary::fromString(longPattern, "p"); }),
+                "p", 1, {"regular expression", "100000 characters",
+                         "more than the 1000 allowed"});
+    const std::string nested = "\"" + std::string(20000, '(') + "a"
+        + std::string(20000, ')') + "\" 1;\n";
+    expectError(catchFatal([&]{ dictionary::fromString(nested, "n"); }),
+                "n", 1, {"regular expression", "40001 characters"});
+
+    const std::string deepest = "\"" + std::string(499, '(') + "a+"
+        + std::string(499, ')') + "\" 1;\n";
+    const auto d = dictionary::fromString(deepest, "ok");
+    EXPECT_EQ(d.get<label>("aaa"), 1);
+}
+
+
 TEST(dictionaryLimits, keywordsMadeInCodeMustBeWords)
 {
     dictionary d("built");

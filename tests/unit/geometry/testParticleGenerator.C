@@ -723,8 +723,13 @@ TEST(particleGenerator, missingDictionary)
     expectMessage(catchFatal([&]
     {
         particleGenerator gen(dir.path());
-    }), {"Cannot find the particle generation dictionary",
-         "system/generateParticlesDict"});
+    }), {"The particle generation dictionary",
+         "system/generateParticlesDict does not exist"});
+    std::filesystem::create_directories(dir.path()/"system");
+    expectMessage(catchFatal([&]
+    {
+        particleGenerator gen(dir.path(), "system");
+    }), {"The particle generation dictionary", "is a directory, not a file"});
 }
 
 

@@ -329,7 +329,11 @@ TEST(surfaceFill, seedOutsideOrALeakIsAnError)
     {
         c.New("shape seedFill; file \"constant/geometry/none.stl\";"
               " seed (0 0 0);", 0.05);
-    }), c.dictFile(), 1, {"Keyword 'file'", "cannot find", "none.stl"});
+    }), c.dictFile(), 1, {"Keyword 'file'", "none.stl does not exist"});
+    expectError(catchFatal([&]
+    {
+        c.New("shape seedFill; file \"constant\"; seed (0 0 0);", 0.05);
+    }), c.dictFile(), 1, {"Keyword 'file'", "is a directory, not a file"});
 
     expectError(catchFatal([&]
     {

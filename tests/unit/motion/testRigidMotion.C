@@ -198,6 +198,24 @@ TEST(rigidMotion, rotationWithTranslation)
 // away from z: restricted to the plane, points of z = 0 stay at exactly 0
 // at every angle (R_zz = cos + (1 - cos) is not always exactly 1, which
 // once lifted a 2D rolling tank's particles off the plane).
+// A direction is normalised by its largest component first: (1e200 0 0)
+// squared overflowed its length to inf, and the paddle it drove stood still.
+TEST(rigidMotion, hugeDirectionIsNotLost)
+{
+    rigidMotion m({0, 0, 0}, {0, 0, 1}, timeFunction(0.0));
+    m.setTranslation({1e200, -1e200, 0}, timeFunction(0.25));
+    EXPECT_NEAR(m.direction().x, 1/std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(m.direction().y, -1/std::sqrt(2.0), 1e-15);
+    const point moved = m.transform(0).apply({0, 0, 0});
+    EXPECT_NEAR(moved.x, 0.25/std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(moved.y, -0.25/std::sqrt(2.0), 1e-15);
+
+    EXPECT_EQ(mag(unitVector(vec3{0, 0, 0})), 0);
+    EXPECT_EQ(mag(unitVector(vec3{std::nan(""), 1, 0})), 0);
+    EXPECT_EQ(unitVector(vec3{0, 3e-300, 0}).y, 1);
+}
+
+
 TEST(rigidMotion, restrictedToThePlane)
 {
     for (const scalar angleDeg : {0.0, 61.0, 100.0, 137.0, 199.0, 271.0})
@@ -344,6 +362,9 @@ TEST(motionSet, errors)
     expectFails("m\n{\nbodies (a);\norigin (0 0 0);\naxis (0 0 0);\n"
                 + angle + "}\n", 5, {"axis", "zero vector"});
     expectFails("m\n{\nbodies (a);\ndirection (0 0 0);\n"
+                "offset { type constant; value 1; }\n}\n", 4,
+                {"direction", "zero vector"});
+    expectFails("m\n{\nbodies (a);\ndirection (1e-300 0 0);\n"
                 "offset { type constant; value 1; }\n}\n", 4,
                 {"direction", "zero vector"});
     // Nothing to move by; a lone axis.

@@ -250,6 +250,15 @@ TEST(timeFunction, rollingTankRecord)
           "select { case deep_oil_bottom_clamped; }\nunits degrees;\n",
         true);
     ASSERT_EQ(deep.times().size(), 499u);
+    // Without select the two cases' rows run back in time: the error
+    // says how to pick one.
+    const FatalError both = test::catchFatal([&]
+    {
+        readFunction(dir, "type table;\nfile \"" + csv + "\";\ntimeColumn"
+            " t_s;\nvalueColumn roll_angle_deg;\nunits degrees;\n", true);
+    });
+    test::expectMessage(both, {"times must increase strictly",
+        "needs select { <column> <text>; } to pick one"});
     EXPECT_DOUBLE_EQ(deep.times().front(), 0.011045301);
     EXPECT_DOUBLE_EQ(deep.times().back(), 4.9862958);
 
