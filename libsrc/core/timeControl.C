@@ -12,6 +12,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include <unistd.h>
+
 namespace sphvcpm
 {
 
@@ -296,7 +298,15 @@ void writeSchedule::written(const double time, const std::string& name,
         }
         while (label(writtenNames_.size()) > control_.purgeWrite)
         {
-            std::filesystem::remove_all(caseDir/writtenNames_.front());
+            // Renamed out of sight first, so that a run killed while it is
+            // deleted leaves no half time directory (the next start
+            // removes what is left: removeInterruptedWrites).
+            const std::string& purged = writtenNames_.front();
+            const auto hidden = caseDir/("." + purged + ".purge."
+                + std::to_string(::getpid()));
+            std::error_code ec;
+            std::filesystem::rename(caseDir/purged, hidden, ec);
+            std::filesystem::remove_all(ec ? caseDir/purged : hidden);
             writtenNames_.erase(writtenNames_.begin());
         }
     }

@@ -261,6 +261,28 @@ std::string startTimeName(const fs::path& caseDir,
 }
 
 
+void fsiSolver::blownUpStart(const std::string& timeFile) const
+{
+    const std::string message = "Time " + startTimeName_ + " is the state a"
+        " blown-up run stopped at (blowUp in " + timeFile + "): it may be"
+        " bad already";
+    if (!postProcessTime_.empty())
+    {
+        return;
+    }
+    if (control_.startFrom != startFromType::startTime)
+    {
+        fatalIOError(timeFile, 0, message + ". The run does not go on from"
+            " it: remove " + startTimeName_ + "/ to go on from the write"
+            " before it, or name it in system/controlDict (startFrom"
+            " startTime; startTime " + startTimeName_ + ";) to try anyway",
+            "blowUp");
+    }
+    warning(message + "; started from it as system/controlDict asks"
+        " (startFrom startTime)", timeFile);
+}
+
+
 void fsiSolver::readStartTime()
 {
     startTimeName_ = postProcessTime_.empty()
@@ -276,11 +298,16 @@ void fsiSolver::readStartTime()
         (caseDir_/startTimeName_/"uniform"/"time").string();
     for (const auto& [key, value] : state.solverValues)
     {
+        if (key == "blowUp")
+        {
+            blownUpStart(timeFile);
+            continue;
+        }
         if (key != "c0")
         {
             fatalIOError(timeFile, 0, "Unknown keyword '" + key + "' in "
-                + timeFile + ": the solver writes only c0 there besides"
-                  " the time (value, name, index, deltaT, deltaT0,"
+                + timeFile + ": the solver writes only c0 and blowUp there"
+                  " besides the time (value, name, index, deltaT, deltaT0,"
                   " beginTime)", key);
         }
         if (!(value > 0))
@@ -1127,9 +1154,15 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
     }
     else if (finite)
     {
-        write();
-        msg << "The last good state (time " << str(time_, 10)
-            << ") was written to " << schedule_->name(time_) << "/.\n";
+        // The step that failed started from it, so it may be bad already:
+        // marked, a restart from latestTime does not go on from it.
+        write(false, true);
+        msg << "The state the failing step started from (time "
+            << str(time_, 10) << ") was written to " << schedule_->name(time_)
+            << "/ to look at; a restart from latestTime refuses it (blowUp"
+               " in its uniform/time): remove it to go on from "
+            << (schedule_->lastWriteName().empty() ? startTimeName_
+                : schedule_->lastWriteName()) << "/.\n";
     }
     msg << "Usual causes: a time step too large for the forces ("
         << (control_.adjustTimeStep ? "lower maxCo or maxDeltaT"
@@ -1186,7 +1219,7 @@ double fsiSolver::countInteractionsGpu() { return 0; }
 #endif
 
 
-void fsiSolver::write(const bool inBackground)
+void fsiSolver::write(const bool inBackground, const bool afterBlowUp)
 {
     finishWrite();
     // The step after a write is a Verlet scheme's Euler step, in this run as
@@ -1250,8 +1283,9 @@ void fsiSolver::write(const bool inBackground)
     }
     for (particleBody& body : out) body.setNextId(maxId + 1);
 
-    const timeState state{time_, schedule_->writeName(time_), timeIndex_, deltaT_,
-                          deltaT0_, beginTime_, {{"c0", model_.c0}}};
+    timeState state{time_, schedule_->writeName(time_), timeIndex_, deltaT_,
+                    deltaT0_, beginTime_, {{"c0", model_.c0}}};
+    if (afterBlowUp) state.solverValues.emplace_back("blowUp", 1);
     const writeFormat format = writeFormatFromName(control_.writeFormatName);
     const int precision = control_.writePrecision;
     log_<< "Writing time " << state.name << std::endl;

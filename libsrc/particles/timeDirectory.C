@@ -375,9 +375,10 @@ void writeTimeDirectory(const fs::path& caseDir, const timeState& state,
         {
             if (exchangePaths(tmp, target))
             {
-                // tmp now holds the old directory.
+                // tmp now holds the old directory: the write is done, and
+                // what cannot be removed now the next start removes.
                 particleFiles::syncPath(caseDir);
-                fs::remove_all(tmp);
+                fs::remove_all(tmp, ec);
                 return;
             }
             const fs::path old = caseDir/("." + state.name + ".old." + pid);
@@ -393,7 +394,7 @@ void writeTimeDirectory(const fs::path& caseDir, const timeState& state,
                 throw;
             }
             particleFiles::syncPath(caseDir);
-            fs::remove_all(old);
+            fs::remove_all(old, ec);
         }
         else
         {
@@ -424,9 +425,16 @@ std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir)
     for (const auto& e : fs::directory_iterator(caseDir, ec))
     {
         const std::string name = e.path().filename().string();
-        // .<time>.tmp.<pid> or .<time>.old.<pid>, <time> a time name.
+        // .<time>.tmp.<pid>, .<time>.old.<pid> (writeTimeDirectory) or
+        // .<time>.purge.<pid> (purgeWrite), <time> a time name.
         std::size_t tag = name.rfind(".tmp.");
         if (tag == std::string::npos) tag = name.rfind(".old.");
+        std::size_t tagLength = 5;
+        if (tag == std::string::npos)
+        {
+            tag = name.rfind(".purge.");
+            tagLength = 7;
+        }
         double t = 0;
         if
         (
@@ -437,7 +445,7 @@ std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir)
         {
             continue;
         }
-        const std::string pid = name.substr(tag + 5);
+        const std::string pid = name.substr(tag + tagLength);
         if (pid.empty()
          || pid.find_first_not_of("0123456789") != std::string::npos)
         {
@@ -457,10 +465,15 @@ std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir)
         {
             continue;
         }
-        // So does a missing <time>: a write stopped between its two
-        // renames (target to .old, .tmp to target) left the time's only
-        // copies there.
-        if (!fs::is_directory(caseDir/name.substr(1, tag - 1), ec))
+        // So does a missing <time> with a .old beside: a write stopped
+        // between its two renames (target to .old, .tmp to target) left
+        // the time's only copies there. A .tmp alone is a write that never
+        // got its name; a .purge was being deleted.
+        const std::string time = name.substr(1, tag - 1);
+        const std::string kind = name.substr(tag + 1, tagLength - 2);
+        if (kind != "purge" && !fs::is_directory(caseDir/time, ec)
+         && (kind == "old"
+          || fs::is_directory(caseDir/("." + time + ".old." + pid), ec)))
         {
             continue;
         }

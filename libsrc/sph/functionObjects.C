@@ -227,6 +227,9 @@ void table::sample(const solverSnapshot& s)
     {
         std::ofstream& os = output(fileNames_[f]);
         errno = 0;
+        // Where this row starts: a row the disk could not take in full is
+        // cut off again, so no half row reads as a wrong number.
+        const std::streamoff rowStart = os.tellp();
         if (!headerWritten_)
         {
             writeFileHeader(os, f);
@@ -241,9 +244,19 @@ void table::sample(const solverSnapshot& s)
         if (!os)
         {
             // The stream keeps no reason; errno has the failed write's.
+            const std::string reason =
+                errno ? std::strerror(errno) : "the stream failed";
+            std::error_code ec;
+            os.close();   // what it still buffers goes now, not after the cut
+            if (rowStart >= 0)
+            {
+                std::filesystem::resize_file(outputPath(fileNames_[f]),
+                    std::uintmax_t(rowStart), ec);
+            }
             fatalError("Function object '" + name() + "': cannot write "
-                + outputPath(fileNames_[f]).string() + ": "
-                + (errno ? std::strerror(errno) : "the stream failed"));
+                + outputPath(fileNames_[f]).string() + ": " + reason
+                + (rowStart >= 0 && !ec ? " (the file ends with the last"
+                   " whole row)" : ""));
         }
     }
     headerWritten_ = true;

@@ -186,7 +186,17 @@ setEnd "$c" 0.02
 limited 2 log.limited sphVcpmFsi
 check "file-size limit, function object: exit status 1" [ $? -eq 1 ]
 expectIn "file-size limit, function object: names the file and the reason" "$c/log.limited" \
-    "Function object '[a-zA-Z]+': cannot write .*postProcessing/.*\\.dat: File too large"
+    "Function object '[a-zA-Z]+': cannot write .*postProcessing/.*\\.dat: File too large \\(the file ends with the last whole row\\)"
+# The row the limit cut is cut off again: every table ends with a newline
+# and its rows (after the header) all have as many columns as the first.
+torn=""
+for f in $(find "$c/postProcessing" -name '*.dat'); do
+    [ -s "$f" ] || continue
+    [ -z "$(tail -c 1 "$f")" ] || torn="$torn $f(no final newline)"
+    awk '!/^#/ { if (n == 0) n = NF; else if (NF != n) bad = 1 } END { exit bad }' "$f" \
+        || torn="$torn $f(a short row)"
+done
+check "file-size limit, function object: no half row left${torn:+:$torn}" [ -z "$torn" ]
 sed -i '/^functions/,$d' "$c/system/controlDict"
 limited 10 log.limited sphVcpmFsi
 check "file-size limit, fields: exit status 1" [ $? -eq 1 ]
@@ -218,18 +228,24 @@ check "names: 0.00005 and 0.00010 written" [ -d "$c/0.00005/water" -a -d "$c/0.0
 check "names: 0.00005 holds its own time" grep -q '^value *5e-05;' "$c/0.00005/uniform/time"
 # What interrupted writes left (hidden .<time>.tmp.<pid>) is removed when
 # its writer is gone and <time> was written; it is kept while its writer
-# runs (this shell stands for one), and where <time> is missing (a write
-# stopped between its two renames leaves the time's only copies there).
+# runs (this shell stands for one), and where <time> is missing beside a
+# .old (a write stopped between its two renames leaves the time's only
+# copies there). A .tmp alone never got its name (a partial write), and a
+# .purge was being deleted (purgeWrite): both removed.
 true & wait $!; gone=$!
 mkdir -p "$c/.0.00005.tmp.$gone/water" "$c/.0.00005.tmp.$$/water" \
-    "$c/.0.0003.old.$gone/water"
+    "$c/.0.0003.old.$gone/water" "$c/.0.0003.tmp.$gone/water" \
+    "$c/.0.0007.tmp.$gone/water" "$c/.0.00001.purge.$gone/water"
 (cd "$c" && sphVcpmFsi > log.leftovers 2>&1)
 check "leftovers: the run ends" grep -q '^End' "$c/log.leftovers"
 check "leftovers: a dead writer's is removed" [ ! -d "$c/.0.00005.tmp.$gone" ]
 expectIn "leftovers: the log says so" "$c/log.leftovers" "Removed .0.00005.tmp.$gone, left by an interrupted write"
 check "leftovers: a running writer's is kept" [ -d "$c/.0.00005.tmp.$$" ]
-check "leftovers: one whose time is missing is kept" [ -d "$c/.0.0003.old.$gone" ]
-rm -rf "$c/.0.00005.tmp.$$" "$c/.0.0003.old.$gone"
+check "leftovers: a .old whose time is missing is kept" [ -d "$c/.0.0003.old.$gone" ]
+check "leftovers: so is the .tmp beside it" [ -d "$c/.0.0003.tmp.$gone" ]
+check "leftovers: a .tmp alone whose time is missing is removed" [ ! -d "$c/.0.0007.tmp.$gone" ]
+check "leftovers: a purge left half-done is removed" [ ! -d "$c/.0.00001.purge.$gone" ]
+rm -rf "$c/.0.00005.tmp.$$" "$c/.0.0003.old.$gone" "$c/.0.0003.tmp.$gone"
 # A name with a number beyond any process id is not the writer's: kept,
 # and no crash on reading it.
 mkdir -p "$c/.0.00005.tmp.99999999999999999999/water"

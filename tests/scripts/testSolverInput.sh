@@ -394,12 +394,28 @@ blowUpPair()    # blowUpPair <timeScheme>
     rm -rf "$every"; cp -r "$scratch/c" "$every"
     sed -i 's/^writeInterval .*/writeInterval 1;/' "$every/system/controlDict"
     expectFatal "$s: a blow-up" "blew up at time" "particle id [0-9]+ of body water" \
-        "The last good state \\(time [0-9.e-]+\\) was written to [0-9.e-]+/"
+        "The state the failing step started from \\(time [0-9.e-]+\\) was written to [0-9.e-]+/ to look at; a restart from latestTime refuses it \\(blowUp in its uniform/time\\): remove it to go on from 0/"
     [ "$s" = verlet ] && expectIn "$s: a blow-up: the Verlet advice" \
         "$scratch/c/log.solver" "With timeScheme verlet"
     t=$(sed -n 's/.*was written to \([^/]*\)\/.*/\1/p' "$scratch/c/log.solver" | head -1)
     check "$s: the last good state ${t:-?}/ exists and is complete" \
         [ -n "$t" -a -f "$scratch/c/$t/water/position" -a -f "$scratch/c/$t/uniform/time" ]
+    # The cause fixed, a restart does not go on from the blown-up state
+    # unless controlDict names it.
+    if [ "$s" = symplectic ]; then
+        local r="$scratch/blowUp.restart"
+        rm -rf "$r"; cp -r "$scratch/c" "$r"
+        sed -i 's/^adjustTimeStep .*/adjustTimeStep yes;/; s/^deltaT .*/deltaT 1e-5;/; s/^endTime .*/endTime 0.03;/' \
+            "$r/system/controlDict"
+        (cd "$r" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+        check "$s: restart from the blown-up $t/: exit status 1" [ $? -eq 1 ]
+        expectIn "$s: restart from the blown-up $t/: says what to do" "$r/log.solver" \
+            "Time $t is the state a blown-up run stopped at \\(blowUp in .*$t/uniform/time\\).*remove $t/ to go on from the write before it"
+        sed -i "s/^startFrom .*/startFrom startTime;/; s/^startTime .*/startTime $t;/" "$r/system/controlDict"
+        (cd "$r" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+        expectIn "$s: startTime $t named: a warning, and it runs" "$r/log.solver" \
+            "Time $t is the state a blown-up run stopped at.*started from it as system/controlDict asks"
+    fi
     (cd "$every" && timeout 120 sphVcpmFsi > log.solver 2>&1)
     check "$s: a blow-up after a write: exit status 1" [ $? -eq 1 ]
     expectIn "$s: a blow-up after a write: names it" "$every/log.solver" \
