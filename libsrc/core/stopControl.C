@@ -51,9 +51,9 @@ extern "C" void onStopSignal(const int sig)
     std::raise(sig);
 }
 
-// controlDict is looked at once a second at most (a stat per step would
-// load a parallel file system's metadata server), and read once it is
-// this old (an editor may still be writing it).
+// controlDict is looked at once a second at most (a stat and a read per
+// step would load a parallel file system's metadata server), and read once
+// it is this old (an editor may still be writing it).
 constexpr std::chrono::milliseconds checkInterval{1000};
 constexpr std::chrono::milliseconds modificationSkew{500};
 
@@ -137,12 +137,14 @@ stopAction stopControl::afterStep(const double time)
         const auto modified = std::filesystem::last_write_time(file_, ec);
         if
         (
-            !ec && modified != control_.modified && modified != unreadable_
-         && std::filesystem::file_time_type::clock::now() - modified
+            !ec && std::filesystem::file_time_type::clock::now() - modified
             >= modificationSkew
         )
         {
-            reread(time, modified);
+            // Told by its text, not its time: two edits within a second
+            // have one time on a file system that keeps whole seconds.
+            std::string text = timeControl::textOf(file_);
+            if (text != control_.text) reread(time, std::move(text));
         }
     }
     if (control_.stopAt == "writeNow") return stopAction::writeNow;
@@ -152,8 +154,7 @@ stopAction stopControl::afterStep(const double time)
 }
 
 
-void stopControl::reread(const double time,
-                         const std::filesystem::file_time_type modified)
+void stopControl::reread(const double time, std::string text)
 {
     timeControl next;
     try
@@ -163,7 +164,7 @@ void stopControl::reread(const double time,
     catch (const FatalError& e)
     {
         // Said once: read again when it changes next.
-        unreadable_ = modified;
+        control_.text = std::move(text);
         warning("system/controlDict changed at time " + str(time)
             + " but cannot be read; the run goes on with the settings it"
               " has:\n" + e.message(), e.file(), e.line());
@@ -200,7 +201,7 @@ void stopControl::reread(const double time,
     control_.writePrecision = next.writePrecision;
     control_.logInterval = next.logInterval;
     control_.runTimeModifiable = next.runTimeModifiable;
-    control_.modified = next.modified;
+    control_.text = std::move(next.text);
     // The next change is told against this one.
     control_.dict = std::move(next.dict);
     if (scheduleChanged)

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -16,6 +17,15 @@
 
 namespace sphvcpm
 {
+
+std::string timeControl::textOf(const std::filesystem::path& file)
+{
+    std::ifstream is(file, std::ios::binary);
+    std::ostringstream os;
+    if (is) os << is.rdbuf();
+    return os.str();
+}
+
 
 timeControl timeControl::read(const std::filesystem::path& caseDir)
 {
@@ -27,8 +37,7 @@ timeControl timeControl::read(const std::filesystem::path& caseDir)
     }
     timeControl tc;
     // Before reading: a change made while it is read is seen later.
-    std::error_code ec;
-    tc.modified = std::filesystem::last_write_time(file, ec);
+    tc.text = textOf(file);
     tc.dict = dictionary::fromFile(file);
     const dictionary& d = tc.dict;
     d.checkKeywords({"application", "startFrom", "startTime", "stopAt",

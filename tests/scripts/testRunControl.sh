@@ -82,15 +82,20 @@ c=$(newCase modified 's/^endTime .*/endTime 100;/; s/^writeInterval .*/writeInte
 sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
 pid=$!
 check "modified: the loop runs" waitFor "$c/log" "^Time = " 60
+# Both edits carry one modification time, as two edits within a second do
+# on a file system that keeps whole seconds: the second is still seen.
 sed -i 's/^endTime .*/endTime -1;/' "$c/system/controlDict"
+stamp=$(stat -c %Y "$c/system/controlDict")
+touch -d "@$stamp" "$c/system/controlDict"
 check "modified: a controlDict that does not read is a warning" \
     waitFor "$c/log" "controlDict changed at time .* cannot be read" 30
 check "modified: the run goes on" kill -0 $pid
-sed -i 's/^endTime .*/endTime 1e-9;/; s/^startTime .*/startTime 0.5;/' "$c/system/controlDict"
+sed -i 's/^endTime .*/endTime 0.001;/; s/^startTime .*/startTime 0.5;/' "$c/system/controlDict"
+touch -d "@$stamp" "$c/system/controlDict"
 waitExit $pid 60
 check "modified: exit 0 once the new endTime is reached" [ $? -eq 0 ]
 expectIn "modified: the new endTime applies" "$c/log" \
-    "controlDict changed at time .*: now endTime 1e-09 \(reached\), stopAt endTime \(changed: endTime\); read at the next start: startTime"
+    "controlDict changed at time .*: now endTime 0.001 \(reached\), stopAt endTime \(changed: endTime\); read at the next start: startTime"
 last=$(sed -n 's/^Writing time //p' "$c/log" | tail -1)
 check "modified: wrote where it stopped ($last)" [ "$(timeDirs "$c")" = "0 $last " ]
 expectIn "modified: End" "$c/log" "^End"
