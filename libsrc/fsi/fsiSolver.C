@@ -511,6 +511,64 @@ void fsiSolver::readStartTime()
         checkWallThickness(bodies);
     }
     placeMovingWalls();
+    if (postProcessTime_.empty())
+    {
+        checkClampsFollowWalls();
+    }
+}
+
+
+void fsiSolver::checkClampsFollowWalls() const
+{
+    if (!wallsMove_ || !solids_) return;
+    const std::vector<const rigidMotion*> clampMotion =
+        motions_.clampMotions(*solids_);
+    const auto& solids = solids_->bodies();
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+    {
+        const rigidMotion* wallMotion = motions_.of(b);
+        if (bodies_[b].type != bodyType::wall || !wallMotion) continue;
+        std::vector<vec3> wall;
+        for (label i = 0; i < particles_.size(); ++i)
+        {
+            if (particles_.body[i] == b)
+            {
+                wall.push_back(toVec3(particles_.position[i]));
+            }
+        }
+        scalar reach = 0;
+        for (const solidBody& s : solids) reach = std::max(reach, s.dp);
+        // Touching: within a spacing of the wall's particles, about where
+        // generateParticles puts a solid's clamped root beside a wall.
+        const pointLocator near(std::move(wall), bodies_[b].dp + reach);
+        for (std::size_t k = 0; k < solids.size(); ++k)
+        {
+            if (clampMotion[k] == wallMotion) continue;
+            const vcpmSolid& solid = *solids[k].solid;
+            label nNear = 0;
+            for (label i = 0; i < solid.size(); ++i)
+            {
+                const vec3 x = toVec3(solid.position[i]);
+                if (solid.clamped()[i]
+                 && near.nearestWithinCell(x) < bodies_[b].dp + solids[k].dp)
+                {
+                    ++nNear;
+                }
+            }
+            if (nNear == 0) continue;
+            warning("Solid '" + solids[k].name + "' is clamped next to wall '"
+                + bodies_[b].name + "' (" + std::to_string(nNear)
+                + " clamped particles within a spacing of it), which moves"
+                " by constant/motion while the clamp "
+                + (clampMotion[k] ? "follows another motion"
+                   : "stays where it is (the solid is in no motion)")
+                + ": the wall will move through the solid's root. To carry"
+                " the clamp with the wall, name " + solids[k].name
+                + " among the bodies of " + bodies_[b].name + "'s motion"
+                " (bodies (" + bodies_[b].name + " " + solids[k].name
+                + ");)", (caseDir_/"constant/motion").string());
+        }
+    }
 }
 
 

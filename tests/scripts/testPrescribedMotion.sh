@@ -291,6 +291,20 @@ expectIn "rolling tank turned at the start: the tank crowds the oil" "$scratch/l
     "Wall tank is moved .* into the fluid: [0-9]+ particles of oil"
 expectIn "rolling tank turned at the start: so does the plate its clamp placed" "$scratch/log.rolled" \
     "Solid plate is moved .* into the fluid: [0-9]+ particles of oil"
+check "rolling tank: the plate's clamp moves with the tank, no warning of its root" \
+    bash -c "! grep -q 'is clamped next to wall' '$scratch/log.rolled'"
+# The plate left out of the tank's motion: its clamp would stay while the
+# floor it stands on rolls through its root.
+m="$scratch/plateLeftOut"
+cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/rollingTank2D" "$m"
+(cd "$m" && ./Allclean > /dev/null 2>&1)
+sed -i 's/bodies *(tank plate);/bodies (tank);/' "$m/constant/motion"
+sed -i 's/^stopAt .*/stopAt writeNow;/' "$m/system/controlDict"
+generateParticles -case "$m" > /dev/null 2>&1
+sphVcpmFsi -case "$m" > "$scratch/log.leftOut" 2>&1
+check "plate left out of the tank's motion: the run goes on" grep -q '^End' "$scratch/log.leftOut"
+expectIn "plate left out of the tank's motion: warned, with the fix" "$scratch/log.leftOut" \
+    "Solid 'plate' is clamped next to wall 'tank' \\([0-9]+ clamped particles within a spacing of it\\), which moves by constant/motion while the clamp stays where it is .*bodies \\(tank plate\\);"
 mistake "a body the case has not" 's/bodies  (tank);/bodies  (tnk);/' \
     "the case has no body tnk \\(did you mean tank\\?\\)" 1
 mistake "a period in metres" 's/period 16;/period [m] 16;/' \
