@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace sphvcpm
 {
 
@@ -113,6 +115,14 @@ stopControl::stopControl(timeControl& control, writeSchedule& schedule,
     sigaction(SIGTERM, nullptr, &previousTerm_);
     if (previousInt_.sa_handler != SIG_IGN) sigaction(SIGINT, &sa, nullptr);
     if (previousTerm_.sa_handler != SIG_IGN) sigaction(SIGTERM, &sa, nullptr);
+    if (previousInt_.sa_handler == SIG_IGN)
+    {
+        // Said, since kill -INT then does nothing and a user waits.
+        log_<< "SIGINT (Ctrl-C) is ignored, as it was when the run started"
+               " (a script's background job): stop the run with kill -TERM "
+            << ::getpid() << ", or stopAt writeNow in system/controlDict\n"
+            << std::endl;
+    }
 }
 
 

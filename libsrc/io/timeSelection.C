@@ -266,7 +266,8 @@ std::vector<timeInstant> timeSelection::selectOrFail(
     {
         fatalError("No time directories in case " + caseDir.string()
             + ": nothing to read (a case holds 0/ or other <time>/"
-              " directories of particle fields)");
+              " directories of particle fields): run generateParticles"
+              " first to write 0/, and sphVcpmFsi for the later times");
     }
     std::vector<timeInstant> result = select(times);
     if (result.empty())

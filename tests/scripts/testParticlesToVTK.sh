@@ -93,8 +93,8 @@ expectFatal "empty -time range" "range '0.5:0.1' is empty" \
 expectFatal "-time selecting nothing" "No time of case .* is selected by -time '5:6'" \
     particlesToVTK -case "$run" -time 5:6
 mkdir -p "$scratch/empty/system"
-expectFatal "case without time directories" "No time directories in case" \
-    particlesToVTK -case "$scratch/empty"
+expectFatal "case without time directories" \
+    "No time directories in case .*: run generateParticles first to write 0/" particlesToVTK -case "$scratch/empty"
 
 # ParaView.
 if ! command -v pvpython > /dev/null; then

@@ -154,5 +154,7 @@ check "an ignored SIGINT: running when it is sent" kill -s INT $pid
 waitExit $pid 300
 check "an ignored SIGINT stays ignored: exit 0" [ $? -eq 0 ]
 check "an ignored SIGINT stays ignored: ran to endTime" [ -d "$c/0.6" ]
+expectIn "an ignored SIGINT: the log says how to stop the run" "$c/log" \
+    "SIGINT \\(Ctrl-C\\) is ignored, as it was when the run started .*: stop the run with kill -TERM $pid, or stopAt writeNow"
 
 finish
