@@ -768,7 +768,7 @@ void particleGenerator::printSummary(std::ostream& os) const
         if (s.gapExcess > gapExcessNoted)
         {
             os << ", its first layer " << s.gapExcess << " dp beyond the"
-               << " contact gap on average";
+               << " contact gap on average at its worst face";
         }
         os << "\n";
         total += s.nParticles;
@@ -791,10 +791,13 @@ scalar particleGenerator::interfaceGapExcess
     // face between the fluid lattice's nodes) falls into the gap at the
     // start, and "still" water flows for seconds. The mean excess of the
     // first layer (nodes within the gap plus 0.9 dp), in dp, largest over
-    // the obstacles, body by body (one that lies well on the lattice must
-    // not hide another).
+    // the obstacles, body by body and face by face (one that lies well on
+    // the lattice must not hide another: a baffle right on one side and
+    // half a spacing off on the other averaged to a quarter). A node's
+    // face is the direction, to the nearest axis, from its nearest
+    // obstacle particle.
     scalar worst = 0;
-    std::string worstName;
+    std::string worstName, worstFace;
     for (const obstacleBody& o : bodies)
     {
         const scalar gap = 0.5*(spec.dp + o.dp);
@@ -802,19 +805,30 @@ scalar particleGenerator::interfaceGapExcess
         const std::vector<vec3>& all = obstacles.at(o.dp);
         const pointLocator locator(std::vector<vec3>(all.begin() + o.first,
             all.begin() + o.first + o.count), window);
-        double sum = 0;
-        label n = 0;
+        double sum[6] = {0, 0, 0, 0, 0, 0};
+        label n[6] = {0, 0, 0, 0, 0, 0};
         for (const vec3& p : nodes)
         {
-            const scalar d = locator.nearestWithinCell(p);
+            vec3 q;
+            const scalar d = locator.nearestWithinCell(p, q);
             if (d >= window) continue;
-            sum += std::max<scalar>(0, d - gap);
-            ++n;
+            const vec3 out = p - q;
+            int axis = 0;
+            for (int a = 1; a < 3; ++a)
+            {
+                if (std::abs(out[a]) > std::abs(out[axis])) axis = a;
+            }
+            const int face = 2*axis + (out[axis] > 0 ? 1 : 0);
+            sum[face] += std::max<scalar>(0, d - gap);
+            ++n[face];
         }
-        if (n > 0 && sum/n/spec.dp > worst)
+        for (int face = 0; face < 6; ++face)
         {
-            worst = scalar(sum/n/spec.dp);
+            // A face of fewer nodes is a corner's, or a member's end.
+            if (n[face] < 3 || sum[face]/n[face]/spec.dp <= worst) continue;
+            worst = scalar(sum[face]/n[face]/spec.dp);
             worstName = o.name;
+            worstFace = std::string(face % 2 ? "+" : "-") + "xyz"[face/2];
         }
     }
     if (worst > gapExcessWarned)
@@ -822,7 +836,8 @@ scalar particleGenerator::interfaceGapExcess
         std::ostringstream os;
         os  << "Fluid body '" << spec.name << "': its first layer of"
             << " particles stands on average " << worst << " dp farther"
-            << " from body '" << worstName << "' than the contact gap"
+            << " from the " << worstFace << " face of body '" << worstName
+            << "' than the contact gap"
             << " (dp + dp_o)/2 that the solver holds: its faces lie between"
             << " the fluid lattice's nodes. The fluid falls into the gap at the start,"
             << " and still water flows. Put the faces half a spacing from"

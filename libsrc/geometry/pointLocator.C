@@ -201,10 +201,23 @@ bool pointLocator::anyWithin(const vec3& p, scalar distance) const
 
 scalar pointLocator::nearestWithinCell(const vec3& p) const
 {
+    vec3 nearest;
+    return nearestWithinCell(p, nearest);
+}
+
+
+scalar pointLocator::nearestWithinCell(const vec3& p, vec3& nearest) const
+{
     scalar best = cellSize_;
+    nearest = p;
     visitNear(p, [&](const vec3& q)
     {
-        best = std::min(best, mag(q - p));
+        const scalar d = mag(q - p);
+        if (d < best)
+        {
+            best = d;
+            nearest = q;
+        }
         return false;
     });
     return best;

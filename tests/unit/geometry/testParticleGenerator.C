@@ -316,6 +316,33 @@ TEST(particleGenerator, fluidOverlappingSolid)
 }
 
 
+TEST(particleGenerator, gapExcessIsTakenFaceByFace)
+{
+    // A gate of dp/2, 0.025 m thick, in water spanning it: its left face
+    // lies half a fluid spacing from the water's nodes (the first layer at
+    // the contact gap, 0.0075 m), its right face on them (the first layer
+    // kept 0.0125 m off, 0.5 dp beyond the gap; its corner's nodes a
+    // little more). Averaged with the left face's 0 it fell below the
+    // warning; face by face it is warned of, and named.
+    std::string dict = replaced(exampleDict, "max (0.4 0.3 0); }",
+                                "max (0.8 0.3 0); }");
+    dict = replaced(dict, "min (0.5 0 0); max (0.52 0.2 0);",
+                    "min (0.5 0 0); max (0.525 0.2 0);");
+    dict = replaced(dict, "        latticeOrigin (0.5 0 0);\n",
+                    "        dp 0.005;\n        latticeOrigin (0.5 0 0);\n");
+    testCase c(dict);
+    particleGenerator gen(c.path());
+    testing::internal::CaptureStderr();
+    gen.generate();
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_GT(gen.summaries()[2].gapExcess,
+              particleGenerator::gapExcessWarned);
+    EXPECT_LT(gen.summaries()[2].gapExcess, 0.6);
+    EXPECT_NE(err.find("dp farther from the +x face of body 'gate'"),
+              std::string::npos) << err;
+}
+
+
 TEST(particleGenerator, finerSolidsBesideACoarseOneDoNotOverlap)
 {
     // Solids of one type are kept (dp + dp_o)/2 apart by their own
