@@ -5,6 +5,7 @@
 #include "error.H"
 #include "formatting.H"
 #include "fluidInteractions.H"
+#include "motionSet.H"
 #include "parallel.H"
 #include "withKernel.H"
 
@@ -775,7 +776,7 @@ solidPoints::solidPoints(std::string name, const dictionary& dict,
     nDimensions_(model.nDimensions),
     dp_(model.dp)
 {
-    dict.checkKeywords(keywords({"body", "points"}));
+    dict.checkKeywords(keywords({"body", "points", "frame"}));
     body_ = dict.get<std::string>("body");
     std::string solids;
     bool found = false;
@@ -792,6 +793,33 @@ solidPoints::solidPoints(std::string name, const dictionary& dict,
             + ")");
     }
     points_ = readPoints(dict, "points", this->name(), model);
+
+    const std::string frame = dict.getOrDefault<std::string>("frame", "lab");
+    if (frame != "lab" && frame != "clamp")
+    {
+        dict.fatalAt("frame", "Function object '" + this->name() + "': frame"
+            " '" + frame + "' is not one of: lab (x - X, the default), clamp"
+            " (relative to the motion of the solid's clamp, in its axes)");
+    }
+    if (frame == "clamp")
+    {
+        motionSet motions = motionSet::readIfPresent(caseDir, nDimensions_);
+        if (nDimensions_ == 2) motions.restrictToPlane();
+        for (const namedMotion& m : motions.motions())
+        {
+            if (&m.motion != motions.motionOf(body_)) continue;
+            clampMotion_ = m.motion;
+            clampMotionName_ = m.name;
+        }
+        if (!clampMotion_)
+        {
+            dict.fatalAt("frame", "Function object '" + this->name() + "':"
+                " frame clamp, but solid '" + body_ + "' is in no motion of"
+                " constant/motion: its clamp stays in the lab frame (leave"
+                " frame out), or name " + body_ + " among the bodies of the"
+                " motion that carries it");
+        }
+    }
 }
 
 
@@ -839,9 +867,15 @@ std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
         }
     }
     std::vector<scalar> row;
+    rigidTransform T = rigidTransform::identity();
+    if (clampMotion_) T = clampMotion_->transform(s.time);
     for (const label i : particles_)
     {
-        const vec3 u = toVec3(x[i] - X[i]);
+        // frame clamp: what the solid adds to its clamp's rigid motion,
+        // seen from the axes that move with it (a baffle's bending on a
+        // rolling tank, without the roll).
+        const vec3 u = clampMotion_ ? toVec3(T.rotateBack(x[i] - T.apply(X[i])))
+                                    : toVec3(x[i] - X[i]);
         row.push_back(u.x);
         row.push_back(u.y);
         if (nDimensions_ == 3) row.push_back(u.z);
@@ -852,8 +886,18 @@ std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
 
 void solidPoints::writeHeader(std::ostream& os) const
 {
-    os << "# Displacement x - X of solid " << body_ << " at the particles"
-       << " with reference positions X:\n";
+    if (clampMotion_)
+    {
+        os << "# Displacement R^T (x - T(X)) of solid " << body_ << " relative"
+           << " to its clamp's motion " << clampMotionName_ << " (T, rotation"
+           << " R), in the axes that turn with it, at the particles with"
+           << " reference positions X:\n";
+    }
+    else
+    {
+        os << "# Displacement x - X of solid " << body_ << " at the particles"
+           << " with reference positions X:\n";
+    }
     for (std::size_t k = 0; k < chosen_.size(); ++k)
     {
         os << "#   point " << k << ": " << str(chosen_[k], 10) << " (asked "

@@ -157,6 +157,11 @@ writeInterval   1;
 writeFormat     ascii;
 writePrecision  17;
 logInterval     100000;
+functions
+{
+    lab   { type solidPoints; body strip; points ((0.099 0.011 0)); }
+    turns { type solidPoints; body strip; points ((0.099 0.011 0)); frame clamp; }
+}
 DICT
 generateParticles -case "$c" > "$scratch/log.genStrip" 2>&1
 check "strip: generateParticles" [ $? -eq 0 ]
@@ -169,6 +174,35 @@ check "strip: at rest on the rigid rotation by 90 degrees (max error $err m)" \
 vm=$(fieldValues "$c/2/strip/vonMises" | awk '{ v = $1 < 0 ? -$1 : $1; if (v > m) m = v } END { printf "%.3g\n", m + 0 }')
 check "strip: unstrained after the turn (max von Mises $vm Pa, E = 1 MPa)" \
     python3 -c "import sys; sys.exit(0 if $vm < 1e-2 else 1)"
+# solidPoints at the free end: in the lab, the turn's 0.137 m; with frame
+# clamp, relative to the turn, what the strip adds: nothing at rest, and
+# no more than a small lag while it turns (the clamp leads the strip).
+lastRow() { awk '!/^#/ { r = $0 } END { print r }' "$1"; }
+labEnd=$(lastRow "$c/postProcessing/lab/0/displacement.dat")
+relEnd=$(lastRow "$c/postProcessing/turns/0/displacement.dat")
+check "strip: solidPoints in the lab: the tip moved by the turn, 0.137 m ($labEnd)" \
+    awk -v r="$labEnd" 'BEGIN { split(r, a, " "); d = sqrt(a[2]^2 + a[3]^2); exit !(a[1] == 2 && d > 0.13 && d < 0.14) }'
+check "strip: solidPoints frame clamp: nothing left at rest ($relEnd)" \
+    awk -v r="$relEnd" 'BEGIN { split(r, a, " "); exit !(a[1] == 2 && a[2]^2 + a[3]^2 < 1e-16) }'
+relMax=$(awk '!/^#/ { d = sqrt($2^2 + $3^2); if (d > m) m = d } END { printf "%.3g\n", m }' \
+    "$c/postProcessing/turns/0/displacement.dat")
+check "strip: solidPoints frame clamp: a small lag while it turns ($relMax m, the lab's 0.14 m)" \
+    awk -v m="$relMax" 'BEGIN { exit !(m > 0 && m < 0.005) }'
+expectIn "strip: frame clamp: the header says so" "$c/postProcessing/turns/0/displacement.dat" \
+    "^# Displacement R\\^T \\(x - T\\(X\\)\\) of solid strip relative to its clamp's motion turn"
+# frame clamp for a solid in no motion, and a frame that is neither.
+b="$scratch/stripBadFrame"
+rm -rf "$b"; cp -r "$c" "$b"; rm -rf "$b"/[1-9]* "$b/postProcessing" "$b/constant/motion"
+sphVcpmFsi -case "$b" > "$scratch/log.badFrame" 2>&1
+check "frame clamp, no motion: exit status 1" [ $? -eq 1 ]
+expectIn "frame clamp, no motion: says what to do" "$scratch/log.badFrame" \
+    "Function object 'turns': frame clamp, but solid 'strip' is in no motion of constant/motion"
+cp "$c/constant/motion" "$b/constant/motion"
+sed -i 's/frame clamp;/frame body;/' "$b/system/controlDict"
+sphVcpmFsi -case "$b" > "$scratch/log.badFrame" 2>&1
+check "frame body: exit status 1" [ $? -eq 1 ]
+expectIn "frame body: names the choices" "$scratch/log.badFrame" \
+    "frame 'body' is not one of: lab .*, clamp"
 
 # 3. A tank accelerated along x
 c="$scratch/accelerated"
