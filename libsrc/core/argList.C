@@ -5,10 +5,12 @@
 #include "progressEstimate.H"
 #include "version.H"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -204,6 +206,47 @@ void argList::printBanner(const std::string& deviceLine) const
               << "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n"
               << std::endl;
 }
+
+std::string threadContentionNote()
+{
+    int threads = 1, cores = 1;
+#ifdef _OPENMP
+    threads = omp_get_max_threads();
+    cores = omp_get_num_procs();
+#endif
+    const char* policy = std::getenv("OMP_WAIT_POLICY");
+    if (threads < 2 || (policy && std::string(policy) == "passive"))
+    {
+        return "";
+    }
+    // Processes running now (/proc/loadavg's "running/total", this one
+    // among them), the fewest of a few looks: this process's own threads
+    // may still spin from the last parallel loop for a moment.
+    int others = 1 << 30;
+    for (int look = 0; look < 5; ++look)
+    {
+        std::ifstream is("/proc/loadavg");
+        double avg[3];
+        int running = 0;
+        char slash;
+        if (!(is >> avg[0] >> avg[1] >> avg[2] >> running >> slash))
+        {
+            return "";
+        }
+        others = std::min(others, running - 1);
+        usleep(20000);
+    }
+    if (others <= 0 || others + threads <= cores) return "";
+    std::ostringstream os;
+    os << "Note: " << others << " other process" << (others > 1 ? "es" : "")
+       << " running on the " << cores << " cores: with " << threads
+       << " threads, which spin where they wait, this run can be several"
+       << " times slower (docs/solver.md, Threads). OMP_NUM_THREADS="
+       << std::max(1, cores - others) << " or OMP_WAIT_POLICY=passive"
+       << " avoid it.\n";
+    return os.str();
+}
+
 
 std::string executionTimeLine()
 {

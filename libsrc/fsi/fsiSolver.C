@@ -1452,6 +1452,7 @@ void fsiSolver::run()
     ++nInteractionSamples_;
     executeFunctions();
 
+    if (!gpu_) log_<< threadContentionNote();
     log_<< "Starting time loop\n" << std::endl;
     const auto wallStart = std::chrono::steady_clock::now();
     double outputSeconds = 0;

@@ -171,6 +171,7 @@ void solidOnlySolver::run()
     }
     executeFunctions();
 
+    log_<< threadContentionNote();
     log_<< "Starting time loop\n" << std::endl;
     label stepsRun = 0;
     stopControl stop(control_, *schedule_, caseDir_, log_);

@@ -157,4 +157,22 @@ check "an ignored SIGINT stays ignored: ran to endTime" [ -d "$c/0.6" ]
 expectIn "an ignored SIGINT: the log says how to stop the run" "$c/log" \
     "SIGINT \\(Ctrl-C\\) is ignored, as it was when the run started .*: stop the run with kill -TERM $pid, or stopAt writeNow"
 
+# Other processes on the cores the threads need: said at the start of the
+# loop, unless the threads wait passively (docs/solver.md, Threads). A
+# busy loop per core makes sure of them.
+c=$(newCase contention 's/^endTime .*/endTime 0.002;/')
+cores=$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)   # nproc heeds them
+busy=()
+for ((i = 0; i < cores; ++i)); do
+    bash -c 'end=$((SECONDS + 30)); while ((SECONDS < end)); do :; done' &
+    busy+=($!)
+done
+env -u OMP_WAIT_POLICY OMP_NUM_THREADS=$cores sphVcpmFsi -case "$c" > "$c/log" 2>&1
+expectIn "busy cores: the log says the threads will contend" "$c/log" \
+    "^Note: [0-9]+ other process(es)? running on the $cores cores: with $cores threads, .* OMP_NUM_THREADS=1 or OMP_WAIT_POLICY=passive avoid it"
+rm -rf "$c"/0.0*
+OMP_WAIT_POLICY=passive OMP_NUM_THREADS=$cores sphVcpmFsi -case "$c" > "$c/log" 2>&1
+check "busy cores, passive threads: no note" bash -c "! grep -q '^Note: .* other process' '$c/log'"
+kill "${busy[@]}" 2> /dev/null; wait "${busy[@]}" 2> /dev/null
+
 finish
