@@ -1439,6 +1439,7 @@ void fsiSolver::run()
             " reads its time");
     }
     schedule_.emplace(control_, time_);
+    schedule_->countEarlierWrites(writesUpTo(caseDir_, time_));
 
     if (time_ >= control_.endTime*(1 - 1e-12))
     {

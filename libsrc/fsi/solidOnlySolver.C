@@ -158,6 +158,7 @@ void solidOnlySolver::run()
             " only reads its time");
     }
     schedule_.emplace(control_, time_);
+    schedule_->countEarlierWrites(writesUpTo(caseDir_, time_));
     if (time_ >= control_.endTime*(1 - 1e-12))
     {
         log_<< "Time " << time_ << " is at or past endTime "

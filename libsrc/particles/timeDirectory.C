@@ -320,6 +320,21 @@ std::string initialTimeName(const fs::path& caseDir)
 }
 
 
+std::vector<std::string> writesUpTo(const fs::path& caseDir, const double t)
+{
+    const std::vector<timeInstant> times = findTimes(caseDir);
+    std::vector<std::string> names;
+    for (std::size_t i = 1; i < times.size(); ++i)
+    {
+        if (times[i].value <= t + 1e-12*std::max(1.0, std::abs(t)))
+        {
+            names.push_back(times[i].name);
+        }
+    }
+    return names;
+}
+
+
 // * * * * * * * * * * * * * * * * * Writing * * * * * * * * * * * * * * * //
 
 void writeTimeDirectory(const fs::path& caseDir, const timeState& state,

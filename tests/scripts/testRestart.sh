@@ -226,6 +226,21 @@ expectIn "names: the precision raised, with a warning" "$c/log.sphVcpmFsi" \
     "Increased the timePrecision from 1 to 5"
 check "names: 0.00005 and 0.00010 written" [ -d "$c/0.00005/water" -a -d "$c/0.00010/water" ]
 check "names: 0.00005 holds its own time" grep -q '^value *5e-05;' "$c/0.00005/uniform/time"
+# purgeWrite across a restart: the writes of the run before it count, so
+# that a run stopped and continued keeps the initial time and the last two,
+# as one never stopped (each restart had left the earlier run's behind).
+pw="$scratch/purged"
+cp -r "$source" "$pw"
+sed -i 's/^writeInterval .*/writeInterval   0.005;\npurgeWrite 2;/' "$pw/system/controlDict"
+setEnd "$pw" 0.015
+(cd "$pw" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.first 2>&1)
+check "purgeWrite: the first run keeps 0 and its last two" [ "$(cd "$pw" && ls -d [0-9]* | sort -g | tr '\n' ' ')" = "0 0.01 0.015 " ]
+setEnd "$pw" 0.025
+(cd "$pw" && sphVcpmFsi > log.second 2>&1)
+check "purgeWrite: the restart ends" grep -q '^End' "$pw/log.second"
+check "purgeWrite: after the restart, 0 and the last two ($(cd "$pw" && ls -d [0-9]* | sort -g | tr '\n' ' '))" \
+    [ "$(cd "$pw" && ls -d [0-9]* | sort -g | tr '\n' ' ')" = "0 0.02 0.025 " ]
+
 # What interrupted writes left (hidden .<time>.tmp.<pid>) is removed when
 # its writer is gone and <time> was written; it is kept while its writer
 # runs (this shell stands for one), and where <time> is missing beside a

@@ -233,3 +233,37 @@ TEST(writeSchedule, purgeWriteKeepsTheLastWritesAndTheStart)
     std::sort(left.begin(), left.end());
     EXPECT_EQ(left, (std::vector<std::string>{"0", "0.4", "0.5"}));
 }
+
+
+TEST(writeSchedule, purgeWriteCountsTheWritesBeforeARestart)
+{
+    // A run killed after writing 0.1 to 0.4 (purgeWrite 2 had left 0.3 and
+    // 0.4) and one that went on from 0.4 with a stale 0.2 of an earlier
+    // try: with the earlier writes counted, two more writes leave the
+    // initial time and the last two, as a run never stopped would.
+    scratchDir dir("schedule");
+    timeControl control =
+        readControl(dir, "writeInterval 0.1;\npurgeWrite 2;\n");
+    control.endTime = 0.6;
+    writeSchedule schedule(control, 0.4);
+    for (const std::string name : {"0", "0.2", "0.3", "0.4"})
+    {
+        std::filesystem::create_directories(dir.path()/name);
+    }
+    schedule.countEarlierWrites({"0.2", "0.3", "0.4"});
+    for (const std::string name : {"0.5", "0.6"})
+    {
+        std::filesystem::create_directories(dir.path()/name);
+        schedule.written(std::stod(name), name, dir.path(), "0.4");
+    }
+    std::vector<std::string> left;
+    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+    {
+        if (e.path().filename() != "system")
+        {
+            left.push_back(e.path().filename().string());
+        }
+    }
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, (std::vector<std::string>{"0", "0.5", "0.6"}));
+}
