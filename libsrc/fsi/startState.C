@@ -18,9 +18,24 @@ namespace fs = std::filesystem;
 
 void clearInterruptedWrites(const fs::path& caseDir, std::ostream& log)
 {
-    for (const std::string& left : removeInterruptedWrites(caseDir))
+    std::vector<std::string> kept;
+    for (const std::string& left : removeInterruptedWrites(caseDir, &kept))
     {
         log << "Removed " << left << ", left by an interrupted write\n";
+    }
+    for (const std::string& old : kept)
+    {
+        // .<time>.old.<pid>: a write stopped between its two renames.
+        const std::size_t tag = old.rfind(".old.");
+        const std::string time = old.substr(1, tag - 1);
+        const std::string tmp = "." + time + ".tmp." + old.substr(tag + 5);
+        const bool hasTmp = fs::is_directory(caseDir/tmp);
+        warning("Time " + time + " is missing: a run was stopped between the"
+            " two renames of its write, and its only copies are hidden in "
+            + old + " (the state it replaced)"
+            + (hasTmp ? " and " + tmp + " (the new write, complete)" : "")
+            + ". To keep " + (hasTmp ? "the new write: mv " + tmp : "it: mv "
+            + old) + " " + time, caseDir.string());
     }
 }
 

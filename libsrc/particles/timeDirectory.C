@@ -433,7 +433,8 @@ void writeTimeDirectory(const fs::path& caseDir, const timeState& state,
 
 // * * * * * * * * * * * * * * * * * Reading * * * * * * * * * * * * * * * //
 
-std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir)
+std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir,
+    std::vector<std::string>* kept)
 {
     std::vector<std::string> removed;
     std::error_code ec;
@@ -490,12 +491,14 @@ std::vector<std::string> removeInterruptedWrites(const fs::path& caseDir)
          && (kind == "old"
           || fs::is_directory(caseDir/("." + time + ".old." + pid), ec)))
         {
+            if (kind == "old" && kept) kept->push_back(name);
             continue;
         }
         fs::remove_all(e.path(), ec);
         removed.push_back(name);
     }
     std::sort(removed.begin(), removed.end());
+    if (kept) std::sort(kept->begin(), kept->end());
     return removed;
 }
 

@@ -258,6 +258,8 @@ expectIn "leftovers: the log says so" "$c/log.leftovers" "Removed .0.00005.tmp.$
 check "leftovers: a running writer's is kept" [ -d "$c/.0.00005.tmp.$$" ]
 check "leftovers: a .old whose time is missing is kept" [ -d "$c/.0.0003.old.$gone" ]
 check "leftovers: so is the .tmp beside it" [ -d "$c/.0.0003.tmp.$gone" ]
+expectIn "leftovers: a warning says where the missing time is, and how to keep it" "$c/log.leftovers" \
+    "Time 0.0003 is missing: a run was stopped between the two renames of its write, and its only copies are hidden in .0.0003.old.$gone .*and .0.0003.tmp.$gone \\(the new write, complete\\). To keep the new write: mv .0.0003.tmp.$gone 0.0003"
 check "leftovers: a .tmp alone whose time is missing is removed" [ ! -d "$c/.0.0007.tmp.$gone" ]
 check "leftovers: a purge left half-done is removed" [ ! -d "$c/.0.00001.purge.$gone" ]
 rm -rf "$c/.0.00005.tmp.$$" "$c/.0.0003.old.$gone" "$c/.0.0003.tmp.$gone"
