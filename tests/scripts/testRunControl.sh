@@ -157,6 +157,28 @@ check "an ignored SIGINT stays ignored: ran to endTime" [ -d "$c/0.6" ]
 expectIn "an ignored SIGINT: the log says how to stop the run" "$c/log" \
     "SIGINT \\(Ctrl-C\\) is ignored, as it was when the run started .*: stop the run with kill -TERM $pid, or stopAt writeNow"
 
+# One solver at a time in a case: a second one started beside a running
+# one is an error naming it; -postProcess may run beside it.
+c=$(newCase locked 's/^endTime .*/endTime 100;/; s/^writeInterval .*/writeInterval 10;/')
+sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
+pid=$!
+check "locked: the first run goes" waitFor "$c/log" "^Time = " 60
+sphVcpmFsi -case "$c" > "$c/log.second" 2>&1
+check "locked: a second run beside it: exit status 1" [ $? -eq 1 ]
+expectIn "locked: the second run names the first" "$c/log.second" \
+    "Another sphVcpmFsi \\(process $pid\\) is running in case .*kill -TERM $pid"
+echo 'functions { beside { type energy; } }' > "$c/system/besideDict"
+sphVcpmFsi -case "$c" -postProcess -latestTime -dict system/besideDict > "$c/log.post" 2>&1
+check "locked: -postProcess beside it runs" grep -q '^End' "$c/log.post"
+kill -TERM $pid; waitExit $pid 60
+sphVcpmFsi -case "$c" > "$c/log.third" 2>&1 &
+pid=$!
+check "locked: once the first is gone (by a signal), a new run goes" waitFor "$c/log.third" "^Time = " 60
+kill -9 $pid; wait $pid 2> /dev/null
+sed -i 's/^endTime .*/endTime 0.002;/' "$c/system/controlDict"
+sphVcpmFsi -case "$c" > "$c/log.fourth" 2>&1
+check "locked: after a kill -9 no stale lock is left" grep -q '^End' "$c/log.fourth"
+
 # Other processes on the cores the threads need: said at the start of the
 # loop, unless the threads wait passively (docs/solver.md, Threads). A
 # busy loop per core makes sure of them.

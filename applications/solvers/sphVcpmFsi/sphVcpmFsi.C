@@ -8,6 +8,7 @@
 // it only evaluates the function objects on the times already written.
 
 #include "argList.H"
+#include "caseLock.H"
 #include "cudaDevice.H"
 #include "error.H"
 #include "solidOnlySolver.H"
@@ -134,6 +135,7 @@ int main(int argc, char* argv[])
         const std::string device = asked.empty() ? control.device : asked;
         args.printBanner((device == "cuda" || device == "auto") && gpuAvailable()
             ? cudaDeviceInfo().describe() : "cpu");
+        const caseLock lock(args.casePath());
 
         // No fluid: the solids alone, without building any SPH data.
         const std::string startTime = startTimeName(args.casePath(), control);
