@@ -1,7 +1,9 @@
 #include "error.H"
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <mutex>
@@ -130,7 +132,22 @@ int runGuarded(const std::function<int()>& body)
     std::signal(SIGXFSZ, SIG_IGN);
     try
     {
-        return body();
+        const int status = body();
+        // A log that lost lines (a full disk under a redirected standard
+        // output) is no clean end, though the time directories stand.
+        errno = 0;
+        std::cout.flush();
+        if (!std::cout)
+        {
+            std::cerr << "\n--> SPHVCPM FATAL ERROR:\nThe log (standard"
+                " output) could not be written in full"
+                << (errno ? std::string(": ") + std::strerror(errno) : "")
+                << ". What the run wrote to its time directories and"
+                   " tables stands; the log lacks lines\n\nSPHVCPM exiting\n"
+                << std::endl;
+            return 1;
+        }
+        return status;
     }
     catch (const FatalError& err)
     {

@@ -179,6 +179,13 @@ sed -i 's/^endTime .*/endTime 0.002;/' "$c/system/controlDict"
 sphVcpmFsi -case "$c" > "$c/log.fourth" 2>&1
 check "locked: after a kill -9 no stale lock is left" grep -q '^End' "$c/log.fourth"
 
+# A log that cannot be written (standard output on a full disk): the run
+# ends with status 1 and says so on standard error, not 0 without its End.
+c=$(newCase fullLog 's/^endTime .*/endTime 0.002;/')
+sphVcpmFsi -case "$c" > /dev/full 2> "$c/log.err"
+check "full log: exit status 1" [ $? -eq 1 ]
+expectIn "full log: says so" "$c/log.err" "The log \\(standard output\\) could not be written in full"
+
 # Other processes on the cores the threads need: said at the start of the
 # loop, unless the threads wait passively (docs/solver.md, Threads). A
 # busy loop per core makes sure of them.
