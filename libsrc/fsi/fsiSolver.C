@@ -524,6 +524,8 @@ void fsiSolver::checkClampsFollowWalls() const
     const std::vector<const rigidMotion*> clampMotion =
         motions_.clampMotions(*solids_);
     const auto& solids = solids_->bodies();
+    scalar reach = 0;
+    for (const solidBody& s : solids) reach = std::max(reach, s.dp);
     for (std::size_t b = 0; b < bodies_.size(); ++b)
     {
         const rigidMotion* wallMotion = motions_.of(b);
@@ -536,8 +538,6 @@ void fsiSolver::checkClampsFollowWalls() const
                 wall.push_back(toVec3(particles_.position[i]));
             }
         }
-        scalar reach = 0;
-        for (const solidBody& s : solids) reach = std::max(reach, s.dp);
         // Touching: within a spacing of the wall's particles, about where
         // generateParticles puts a solid's clamped root beside a wall.
         const pointLocator near(std::move(wall), bodies_[b].dp + reach);

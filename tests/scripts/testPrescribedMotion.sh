@@ -306,20 +306,25 @@ timeout 300 sphVcpmFsi -case "$m" > "$scratch/log.thrown" 2>&1
 check "a tank thrown by its motion: exit status 1" [ $? -eq 1 ]
 expectIn "a tank thrown by its motion: the walls' speed and constant/motion" \
     "$scratch/log.thrown" "Walls move here \(constant/motion\), at up to [0-9.e+]+ m/s"
+# rollingStep <name> <log> <command...>: one step of the rollingTank2D
+# tutorial, its constant/motion edited by the command (given the file last).
+rollingStep()
+{
+    local m="$scratch/$1" log="$2"; shift 2
+    rm -rf "$m"; cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/rollingTank2D" "$m"
+    (cd "$m" && ./Allclean > /dev/null 2>&1)
+    "$@" "$m/constant/motion"
+    sed -i 's/^stopAt .*/stopAt writeNow;/' "$m/system/controlDict"
+    generateParticles -case "$m" > /dev/null 2>&1
+    sphVcpmFsi -case "$m" > "$log" 2>&1
+}
 # The rolling tank turned 8 degrees at the start: its tank and its plate
 # (a solid placed by its clamp's motion) both crowd the oil.
-m="$scratch/rolledAtStart"
-cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/rollingTank2D" "$m"
-(cd "$m" && ./Allclean > /dev/null 2>&1)
-python3 - "$m/constant/motion" <<'PY'
+rollingStep rolledAtStart "$scratch/log.rolled" python3 -c '
 import sys
 s = open(sys.argv[1]).read()
 i = s.index("    angle\n"); j = s.index("    }\n", i) + 6
-open(sys.argv[1], 'w').write(s[:i] + "    angle { type constant; value 8; units degrees; }\n" + s[j:])
-PY
-sed -i 's/^stopAt .*/stopAt writeNow;/' "$m/system/controlDict"
-generateParticles -case "$m" > /dev/null 2>&1
-sphVcpmFsi -case "$m" > "$scratch/log.rolled" 2>&1
+open(sys.argv[1], "w").write(s[:i] + "    angle { type constant; value 8; units degrees; }\n" + s[j:])'
 check "rolling tank turned at the start: one step runs" grep -q '^End' "$scratch/log.rolled"
 expectIn "rolling tank turned at the start: the tank crowds the oil" "$scratch/log.rolled" \
     "Wall tank is moved .* into the fluid: [0-9]+ particles of oil"
@@ -329,13 +334,7 @@ check "rolling tank: the plate's clamp moves with the tank, no warning of its ro
     bash -c "! grep -q 'is clamped next to wall' '$scratch/log.rolled'"
 # The plate left out of the tank's motion: its clamp would stay while the
 # floor it stands on rolls through its root.
-m="$scratch/plateLeftOut"
-cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/rollingTank2D" "$m"
-(cd "$m" && ./Allclean > /dev/null 2>&1)
-sed -i 's/bodies *(tank plate);/bodies (tank);/' "$m/constant/motion"
-sed -i 's/^stopAt .*/stopAt writeNow;/' "$m/system/controlDict"
-generateParticles -case "$m" > /dev/null 2>&1
-sphVcpmFsi -case "$m" > "$scratch/log.leftOut" 2>&1
+rollingStep plateLeftOut "$scratch/log.leftOut" sed -i 's/bodies *(tank plate);/bodies (tank);/'
 check "plate left out of the tank's motion: the run goes on" grep -q '^End' "$scratch/log.leftOut"
 expectIn "plate left out of the tank's motion: warned, with the fix" "$scratch/log.leftOut" \
     "Solid 'plate' is clamped next to wall 'tank' \\([0-9]+ clamped particles within a spacing of it\\), which moves by constant/motion while the clamp stays where it is .*bodies \\(tank plate\\);"

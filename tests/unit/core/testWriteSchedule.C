@@ -57,6 +57,21 @@ std::vector<std::string> writtenNames(const timeControl& control,
     return names;
 }
 
+// What the case directory holds besides system/, sorted.
+std::vector<std::string> entriesBesideSystem(const scratchDir& dir)
+{
+    std::vector<std::string> left;
+    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+    {
+        if (e.path().filename() != "system")
+        {
+            left.push_back(e.path().filename().string());
+        }
+    }
+    std::sort(left.begin(), left.end());
+    return left;
+}
+
 } // End anonymous namespace
 
 
@@ -222,15 +237,7 @@ TEST(writeSchedule, purgeWriteKeepsTheLastWritesAndTheStart)
         std::filesystem::create_directories(dir.path()/name);
         schedule.written(std::stod(name), name, dir.path(), "0");
     }
-    std::vector<std::string> left;
-    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
-    {
-        if (e.path().filename() != "system")
-        {
-            left.push_back(e.path().filename().string());
-        }
-    }
-    std::sort(left.begin(), left.end());
+    const std::vector<std::string> left = entriesBesideSystem(dir);
     EXPECT_EQ(left, (std::vector<std::string>{"0", "0.4", "0.5"}));
 }
 
@@ -256,14 +263,6 @@ TEST(writeSchedule, purgeWriteCountsTheWritesBeforeARestart)
         std::filesystem::create_directories(dir.path()/name);
         schedule.written(std::stod(name), name, dir.path(), "0.4");
     }
-    std::vector<std::string> left;
-    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
-    {
-        if (e.path().filename() != "system")
-        {
-            left.push_back(e.path().filename().string());
-        }
-    }
-    std::sort(left.begin(), left.end());
+    const std::vector<std::string> left = entriesBesideSystem(dir);
     EXPECT_EQ(left, (std::vector<std::string>{"0", "0.5", "0.6"}));
 }
