@@ -1219,7 +1219,7 @@ void fsiSolver::blowUp(const label particle, const std::string& what,
             << str(time_, 10) << ") was written to " << schedule_->name(time_)
             << "/ to look at; a restart from latestTime refuses it (blowUp"
                " in its uniform/time): remove it to go on from "
-            << (schedule_->lastWriteName().empty() ? startTimeName_
+            << (schedule_->lastWriteTime() == beginTime_ ? startTimeName_
                 : schedule_->lastWriteName()) << "/.\n";
     }
     msg << "Usual causes: a time step too large for the forces ("
