@@ -246,12 +246,12 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
         if (type == "probes")
         {
             all.push_back(std::make_unique<probes>
-                (name, dict, caseDir, startTimeName, model));
+                (name, dict, caseDir, startTimeName, model, bodies));
         }
         else if (type == "freeSurfaceGauges")
         {
             all.push_back(std::make_unique<freeSurfaceGauges>
-                (name, dict, caseDir, startTimeName, model));
+                (name, dict, caseDir, startTimeName, model, bodies));
         }
         else if (type == "forces")
         {

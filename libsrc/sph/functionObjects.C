@@ -264,6 +264,68 @@ void table::sample(const solverSnapshot& s)
 }
 
 
+// * * * * * * * * * * * * * * * * * pointFrame * * * * * * * * * * * * * * //
+
+pointFrame::pointFrame(const dictionary& dict, const std::string& objectName,
+                       const std::filesystem::path& caseDir,
+                       const int nDimensions,
+                       const std::vector<bodyInfo>& bodies)
+{
+    const std::string frame = dict.getOrDefault<std::string>("frame", "lab");
+    if (frame == "lab") return;
+    motionSet motions = motionSet::readIfPresent(caseDir, nDimensions);
+    if (nDimensions == 2) motions.restrictToPlane();
+    std::string moving;
+    for (const bodyInfo& b : bodies)
+    {
+        if (b.type == bodyType::fluid || !motions.motionOf(b.name)) continue;
+        moving += " " + b.name;
+    }
+    const std::string choices = "lab (the points stand still, the default)"
+        + (moving.empty() ? std::string(", and no body moves in this case"
+                                        " (constant/motion)")
+                          : ", or a moving body:" + moving);
+    bool isBody = false;
+    for (const bodyInfo& b : bodies)
+    {
+        isBody = isBody || (b.name == frame && b.type != bodyType::fluid);
+    }
+    if (!isBody)
+    {
+        dict.fatalAt("frame", "Function object '" + objectName + "': frame '"
+            + frame + "' is not one of: " + choices);
+    }
+    for (const namedMotion& m : motions.motions())
+    {
+        if (&m.motion != motions.motionOf(frame)) continue;
+        motion_ = m.motion;
+        motionName_ = m.name;
+    }
+    if (!motion_)
+    {
+        dict.fatalAt("frame", "Function object '" + objectName + "': frame "
+            + frame + ", but body '" + frame + "' is in no motion of"
+            " constant/motion, so its points would stand still: leave frame"
+            " out, or choose " + choices);
+    }
+    body_ = frame;
+}
+
+
+rigidTransform pointFrame::at(const double t) const
+{
+    return motion_ ? motion_->transform(t) : rigidTransform::identity();
+}
+
+
+std::string pointFrame::headerLine() const
+{
+    if (!motion_) return "";
+    return "# The points move with body " + body_ + " (motion " + motionName_
+        + "), from the positions given here at its reference position\n";
+}
+
+
 // * * * * * * * * * * * * * * * * * * probes * * * * * * * * * * * * * * * //
 
 const std::vector<std::string> probes::fieldNames{"p", "U", "rho"};
@@ -271,13 +333,16 @@ const std::vector<std::string> probes::fieldNames{"p", "U", "rho"};
 
 probes::probes(std::string name, const dictionary& dict,
                const std::filesystem::path& caseDir,
-               const std::string& startTimeName, const sphModel& model)
+               const std::string& startTimeName, const sphModel& model,
+               const std::vector<bodyInfo>& bodies)
 :
     table(std::move(name), dict, caseDir, startTimeName, "p.dat"),
     fields_{"p"},
-    nDimensions_(model.nDimensions)
+    nDimensions_(model.nDimensions),
+    frame_(dict, this->name(), caseDir, model.nDimensions, bodies)
 {
-    dict.checkKeywords(keywords({"fields", "probeLocations", "wetFraction"}));
+    dict.checkKeywords(keywords({"fields", "probeLocations", "wetFraction",
+                                 "frame"}));
     if (dict.found("wetFraction"))
     {
         wetFraction_ = dict.get<scalar>("wetFraction");
@@ -328,10 +393,15 @@ std::vector<scalar> probes::values(const solverSnapshot& s) const
 
 std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
 {
+    const rigidTransform T = frame_.at(s.time);
+    std::vector<vec3> here;
+    for (const vec3& x : locations_)
+    {
+        here.push_back(toVec3(T.apply(toPoint(x))));
+    }
     if (!checked_)
     {
-        warnOutsideDomain(name(), "probe", locations_, s.cells.grid,
-                          2*s.model.h);
+        warnOutsideDomain(name(), "probe", here, s.cells.grid, 2*s.model.h);
         checked_ = true;
     }
     // Shepard means over the fluid within a support: sum f W V / sum W V.
@@ -343,7 +413,7 @@ std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
     {
         for (std::size_t k = 0; k < n; ++k)
         {
-            const point x = toPoint(locations_[k]);
+            const point x = toPoint(here[k]);
             scalar sumW = 0, sumP = 0, sumRho = 0;
             vec3 sumU{0, 0, 0};
             forEachFluidNear(s, kernel, x, [&](const label j, const scalar r)
@@ -411,6 +481,7 @@ void probes::writeHeader(std::ostream& os) const
 
 void probes::writeFileHeader(std::ostream& os, const std::size_t file) const
 {
+    os << frame_.headerLine();
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
         os << "# Probe " << k << ' ' << str(locations_[k], 10) << '\n';
@@ -439,12 +510,14 @@ void probes::writeFileHeader(std::ostream& os, const std::size_t file) const
 
 freeSurfaceGauges::freeSurfaceGauges(std::string name,
     const dictionary& dict, const std::filesystem::path& caseDir,
-    const std::string& startTimeName, const sphModel& model)
+    const std::string& startTimeName, const sphModel& model,
+    const std::vector<bodyInfo>& bodies)
 :
     table(std::move(name), dict, caseDir, startTimeName, "height.dat"),
+    frame_(dict, this->name(), caseDir, model.nDimensions, bodies),
     maxHeight_(0)
 {
-    dict.checkKeywords(keywords({"locations", "maxHeight"}));
+    dict.checkKeywords(keywords({"locations", "maxHeight", "frame"}));
     locations_ = readPoints(dict, "locations", this->name(), model);
     if (dict.found("maxHeight"))
     {
@@ -463,10 +536,18 @@ freeSurfaceGauges::freeSurfaceGauges(std::string name,
 
 std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
 {
+    // In a moving frame the base points move and the line up turns with
+    // the body (a gauge fixed to a rolling tank measures along its wall).
+    const rigidTransform T = frame_.at(s.time);
+    const vec3 up = toVec3(T.rotate(toPoint(up_)));
+    std::vector<vec3> bases;
+    for (const vec3& b : locations_)
+    {
+        bases.push_back(toVec3(T.apply(toPoint(b))));
+    }
     if (!checked_)
     {
-        warnOutsideDomain(name(), "gauge", locations_, s.cells.grid, 0,
-                          up_);
+        warnOutsideDomain(name(), "gauge", bases, s.cells.grid, 0, up);
         checked_ = true;
     }
     std::vector<scalar> heights(locations_.size(), 0);
@@ -475,9 +556,9 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
         const scalar ds = 0.25*s.model.dp;
         for (std::size_t k = 0; k < locations_.size(); ++k)
         {
-            const vec3& b = locations_[k];
+            const vec3& b = bases[k];
             const scalar sMax = maxHeight_ > 0
-              ? maxHeight_ : extentAlong(s.cells.grid, b, up_);
+              ? maxHeight_ : extentAlong(s.cells.grid, b, up);
             const label n = label(std::ceil(sMax/ds));
             const auto at = [&](label i)
             {
@@ -489,7 +570,7 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
             for (label i = n; i >= 0; --i)
             {
                 const scalar c =
-                    concentration(s, kernel, toPoint(b + at(i)*up_));
+                    concentration(s, kernel, toPoint(b + at(i)*up));
                 if (c >= 0.5)
                 {
                     heights[k] = i == n
@@ -507,6 +588,7 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
 
 void freeSurfaceGauges::writeHeader(std::ostream& os) const
 {
+    os << frame_.headerLine();
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
         os << "# Gauge " << k << ' ' << str(locations_[k], 10) << '\n';

@@ -7,7 +7,10 @@
 #    either side of the axis within 1 dp of each other throughout (a
 #    surface that turned with the tank would differ by 0.3 tan 10 deg =
 #    5.3 dp) and at the still level; the tank's particles are where the
-#    rigid rotation puts them; no particle is lost.
+#    rigid rotation puts them; no particle is lost. Gauges and probes with
+#    frame tank move and tilt with it: in its axes the surface slopes by
+#    -tan 10 deg, and a probe reads what a lab probe at its moved place
+#    reads, the hydrostatic pressure.
 # 2. A clamped rubber strip (solids alone) turned rigidly by 90 degrees
 #    about its clamp in 1 s, then held, with damping: at rest it lies on
 #    the rigid rotation of its reference lattice and carries no stress
@@ -77,6 +80,12 @@ writeFsiControl "$c" 4 1e-4 2 5000 \
     '{' \
     '    levels { type freeSurfaceGauges; writeControl runTime; writeInterval 0.05;' \
     '             locations ((0.05 0 0) (0.35 0 0)); maxHeight 0.3; }' \
+    '    tankLevels { type freeSurfaceGauges; writeControl runTime; writeInterval 0.05;' \
+    '             locations ((0.05 0 0) (0.35 0 0)); maxHeight 0.3; frame tank; }' \
+    '    tankProbes { type probes; writeControl runTime; writeInterval 0.05;' \
+    '             probeLocations ((0.35 0.02 0) (0.05 0.02 0)); frame tank; }' \
+    '    labProbes { type probes; writeControl runTime; writeInterval 0.05;' \
+    '             probeLocations ((0.344248199 0.045743382 0) (0.048805873 -0.006351072 0)); }' \
     '}'
 generateParticles -case "$c" > "$scratch/log.genWater" 2>&1
 check "still water: generateParticles" [ $? -eq 0 ]
@@ -99,6 +108,47 @@ check "still water: levels within 1 dp of each other throughout (worst $worst m)
     python3 -c "import sys; sys.exit(0 if $worst < 0.01 else 1)"
 check "still water: the level is the still level (h0 = $h0 m, 0.1 m at rest)" \
     python3 -c "import sys; sys.exit(0 if abs(0.5*($h0 + $h1) - 0.1) < 0.01 else 1)"
+# Points in the tank's frame (frame tank): they move with the roll, and a
+# gauge's line turns with it. In the tank's axes the still surface slopes
+# by -tan 10 deg and, the area under it kept, stands 0.1 m above the floor
+# mid-tank: the gauges 0.15 m either side read 0.1 +- 0.15 tan 10 deg
+# (0.1264, 0.0736 m). A probe at reference point X reads what a lab probe
+# at R (X - o) + o reads at 10 degrees (t = 4 s; the labProbes' points),
+# and the hydrostatic pressure under the level that the lab gauges see.
+read g0 g1 <<< "$(awk '!/^#/ { a = $2; b = $3 } END { print a, b }' "$c/postProcessing/tankLevels/0/height.dat")"
+echo "    tank-frame levels at t = 4 s: $g0 m, $g1 m (0.1264, 0.0736 m)"
+check "frame tank: the gauges tilt with the tank (levels $g0, $g1 m within dp/2 of 0.1 +- 0.15 tan 10 deg)" \
+    python3 -c "import math, sys; t = 0.15*math.tan(math.radians(10)); sys.exit(0 if abs($g0 - 0.1 - t) < 0.005 and abs($g1 - 0.1 + t) < 0.005 else 1)"
+first0=$(awk '!/^#/ { print $2; exit }' "$c/postProcessing/tankLevels/0/height.dat")
+firstLab0=$(awk '!/^#/ { print $2; exit }' "$dat")
+check "frame tank: at the start the tank's frame is the lab's ($first0 = $firstLab0 m)" \
+    python3 -c "import sys; sys.exit(0 if abs($first0 - $firstLab0) < 1e-9 else 1)"
+read tp0 tp1 <<< "$(awk '!/^#/ { a = $2; b = $3 } END { print a, b }' "$c/postProcessing/tankProbes/0/p.dat")"
+read lp0 lp1 <<< "$(awk '!/^#/ { a = $2; b = $3 } END { print a, b }' "$c/postProcessing/labProbes/0/p.dat")"
+echo "    tank-frame probes at t = 4 s: $tp0, $tp1 Pa; lab probes at their places: $lp0, $lp1 Pa"
+check "frame tank: a probe reads what a lab probe at its turned place reads ($tp0 = $lp0, $tp1 = $lp1 Pa)" \
+    python3 -c "import sys; sys.exit(0 if abs($tp0 - $lp0) < 1e-3 and abs($tp1 - $lp1) < 1e-3 else 1)"
+hydro=$(python3 -c "
+ys = 0.5*($h0 + $h1)
+print('%.1f %.1f' % (1000*9.81*(ys - 0.045743382), 1000*9.81*(ys + 0.006351072)))")
+check "frame tank: the probes read the hydrostatic pressure within 3 % ($tp0, $tp1 Pa against $hydro)" \
+    python3 -c "import sys; a, b = map(float, '$hydro'.split()); sys.exit(0 if abs($tp0/a - 1) < 0.03 and abs($tp1/b - 1) < 0.03 else 1)"
+expectIn "frame tank: the header says how the points move" "$c/postProcessing/tankProbes/0/p.dat" \
+    "^# The points move with body tank \\(motion roll\\)"
+# frame of a body in no motion, of the fluid, of a body the case has not.
+b="$scratch/stillWaterBadFrame"
+rm -rf "$b"; mkdir -p "$b"; cp -r "$c/system" "$c/constant" "$c/0" "$b/"
+rm "$b/constant/motion"
+sphVcpmFsi -case "$b" > "$scratch/log.badTankFrame" 2>&1
+check "frame tank, no motion: exit status 1" [ $? -eq 1 ]
+expectIn "frame tank, no motion: says what to do" "$scratch/log.badTankFrame" \
+    "Function object 'tankLevels': frame tank, but body 'tank' is in no motion of constant/motion, so its points would stand still: leave frame out"
+cp "$c/constant/motion" "$b/constant/motion"
+sed -i 's/frame tank; }/frame water; }/' "$b/system/controlDict"
+sphVcpmFsi -case "$b" > "$scratch/log.badTankFrame" 2>&1
+check "frame water: exit status 1" [ $? -eq 1 ]
+expectIn "frame water: names the moving bodies" "$scratch/log.badTankFrame" \
+    "frame 'water' is not one of: lab \\(the points stand still, the default\\), or a moving body: tank\$"
 # A restart of the tilted tank weighs c0 against the flow as read, not the
 # tilted water's height (which would call for a c0 the start did not).
 r="$scratch/stillWaterRestart"
