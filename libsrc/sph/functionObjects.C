@@ -190,6 +190,26 @@ scalar extentAlong(const cellGrid& g, const vec3& b, const vec3& u)
     return t > 0 ? t : 0;
 }
 
+// The case's constant/motion (none without it), in its plane for a 2D case.
+motionSet caseMotions(const std::filesystem::path& caseDir,
+                      const int nDimensions)
+{
+    motionSet motions = motionSet::readIfPresent(caseDir, nDimensions);
+    if (nDimensions == 2) motions.restrictToPlane();
+    return motions;
+}
+
+// The motion that moves body, nullptr when it does not move.
+const namedMotion* motionOfBody(const motionSet& motions,
+                                const std::string& body)
+{
+    for (const namedMotion& m : motions.motions())
+    {
+        if (&m.motion == motions.motionOf(body)) return &m;
+    }
+    return nullptr;
+}
+
 // Sums over all particles accumulate in double in every build (a float
 // sum of a million terms keeps only a few digits).
 using sumVec = Vec3<double>;
@@ -273,13 +293,12 @@ pointFrame::pointFrame(const dictionary& dict, const std::string& objectName,
 {
     const std::string frame = dict.getOrDefault<std::string>("frame", "lab");
     if (frame == "lab") return;
-    motionSet motions = motionSet::readIfPresent(caseDir, nDimensions);
-    if (nDimensions == 2) motions.restrictToPlane();
+    const motionSet motions = caseMotions(caseDir, nDimensions);
     std::string moving;
     for (const bodyInfo& b : bodies)
     {
-        if (b.type == bodyType::fluid || !motions.motionOf(b.name)) continue;
-        moving += " " + b.name;
+        if (b.type == bodyType::fluid) continue;
+        if (motionOfBody(motions, b.name)) moving += " " + b.name;
     }
     const std::string choices = "lab (the points stand still, the default)"
         + (moving.empty() ? std::string(", and no body moves in this case"
@@ -295,13 +314,12 @@ pointFrame::pointFrame(const dictionary& dict, const std::string& objectName,
         dict.fatalAt("frame", "Function object '" + objectName + "': frame '"
             + frame + "' is not one of: " + choices);
     }
-    for (const namedMotion& m : motions.motions())
+    if (const namedMotion* m = motionOfBody(motions, frame))
     {
-        if (&m.motion != motions.motionOf(frame)) continue;
-        motion_ = m.motion;
-        motionName_ = m.name;
+        motion_ = m->motion;
+        motionName_ = m->name;
     }
-    if (!motion_)
+    else
     {
         dict.fatalAt("frame", "Function object '" + objectName + "': frame "
             + frame + ", but body '" + frame + "' is in no motion of"
@@ -885,15 +903,13 @@ solidPoints::solidPoints(std::string name, const dictionary& dict,
     }
     if (frame == "clamp")
     {
-        motionSet motions = motionSet::readIfPresent(caseDir, nDimensions_);
-        if (nDimensions_ == 2) motions.restrictToPlane();
-        for (const namedMotion& m : motions.motions())
+        const motionSet motions = caseMotions(caseDir, nDimensions_);
+        if (const namedMotion* m = motionOfBody(motions, body_))
         {
-            if (&m.motion != motions.motionOf(body_)) continue;
-            clampMotion_ = m.motion;
-            clampMotionName_ = m.name;
+            clampMotion_ = m->motion;
+            clampMotionName_ = m->name;
         }
-        if (!clampMotion_)
+        else
         {
             dict.fatalAt("frame", "Function object '" + this->name() + "':"
                 " frame clamp, but solid '" + body_ + "' is in no motion of"
