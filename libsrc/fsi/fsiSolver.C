@@ -396,6 +396,11 @@ void fsiSolver::readStartTime()
     {
         motions_.placeSolids(*solids_, time_);
     }
+    else
+    {
+        motions_.checkRestart(caseDir_, startTimeName_, time_, bodies,
+                              *solids_);
+    }
     if (!solids_->empty())
     {
         coupling_ = std::make_unique<fluidSolidCoupling>(*solids_);

@@ -3,10 +3,13 @@
 \*---------------------------------------------------------------------------*/
 #include "prescribedMotions.H"
 #include "error.H"
+#include "formatting.H"
 #include "solidBodySet.H"
+#include "timeDirectory.H"
 
 #include <cmath>
 #include <ostream>
+#include <unordered_map>
 
 namespace sphvcpm
 {
@@ -117,6 +120,71 @@ void prescribedMotions::placeSolids(solidBodySet& solids, const double t)
             solid.position[i] = T.apply(X);
             solid.velocity[i] = T.velocityAt(X);
         }
+    }
+}
+
+
+void prescribedMotions::checkRestart(const std::filesystem::path& caseDir,
+    const std::string& startTimeName, const double t,
+    const std::vector<particleBody>& bodies, const solidBodySet& solids)
+    const
+{
+    const std::string initial = initialTimeName(caseDir);
+    if (set_.empty() || initial.empty() || initial == startTimeName) return;
+    // Well above the round-off of ascii writes, well below a change of
+    // the motion that matters.
+    const auto check = [&](const std::string& what, const std::string& name,
+                           const scalar worst, const scalar dp)
+    {
+        if (!(worst > 0.1*dp)) return;
+        fatalError(what + " " + name + " of the restart time "
+            + startTimeName + " is up to " + str(worst) + " m (" + str(worst/dp)
+            + " dp) from where constant/motion puts it at that time: the"
+            " motion has changed since the run that wrote it, and the body"
+            " would go on from where it is, off the new motion (and off"
+            " the probes and gauges that follow it). Restore"
+            " constant/motion as it was, or start again from " + initial
+            + " (remove the later times: Allclean)");
+    };
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+    {
+        const particleBody& body = bodies[b];
+        if (body.type() != bodyType::wall || !of(b)) continue;
+        const std::filesystem::path dir = caseDir/initial/body.name();
+        particleBody reference(body.name(), body.type(), body.nDimensions(),
+                               body.dp());
+        readField(dir/"id", reference);
+        readField(dir/"position", reference);
+        std::unordered_map<label, point> X;
+        for (label i = 0; i < reference.size(); ++i)
+        {
+            X.emplace(reference.id()[i], reference.position()[i]);
+        }
+        const rigidTransform T = of(b)->transform(t);
+        scalar worst = 0;
+        for (label i = 0; i < body.size(); ++i)
+        {
+            const auto found = X.find(body.id()[i]);
+            if (found == X.end()) continue;
+            worst = std::max(worst, scalar(mag(toVec3(
+                T.apply(found->second) - body.position()[i]))));
+        }
+        check("Wall", body.name(), worst, body.dp());
+    }
+    for (const solidBody& s : solids.bodies())
+    {
+        const rigidMotion* m = set_.motionOf(s.name);
+        if (!m) continue;
+        const rigidTransform T = m->transform(t);
+        const vcpmSolid& solid = *s.solid;
+        scalar worst = 0;
+        for (label i = 0; i < solid.size(); ++i)
+        {
+            if (!solid.clamped()[i]) continue;
+            worst = std::max(worst, scalar(mag(toVec3(
+                T.apply(solid.reference()[i]) - solid.position[i]))));
+        }
+        check("The clamp of solid", s.name, worst, s.dp);
     }
 }
 

@@ -99,6 +99,11 @@ solidOnlySolver::solidOnlySolver
     {
         motions_.placeSolids(*solids_, time_);
     }
+    else
+    {
+        motions_.checkRestart(caseDir_, startTimeName_, time_, start,
+                              *solids_);
+    }
     clampMotion_ = motions_.clampMotions(*solids_);
     solidsDeltaT_ = solids_->stableDeltaT();
     deltaT_ = std::min(solidsDeltaT_, control_.maxDeltaT);

@@ -2,6 +2,7 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 #include "functionObjects.H"
+#include "dictionaryParser.H"
 #include "error.H"
 #include "formatting.H"
 #include "fluidInteractions.H"
@@ -84,12 +85,16 @@ bool nearGrid(const cellGrid& g, const point& x, const scalar r)
 }
 
 // A probe beyond the support of the domain, or a gauge whose line up from
-// its base misses it (most often a typo), reads 0 at every sample: said
-// once, at the first. up: none for probes.
+// its base misses it (most often a typo), reads 0: said once per point
+// (warned, by point), when first found. time: NaN for points that stand
+// still, else the sample's (a moving frame's point may leave the domain
+// later). up: none for probes.
 void warnOutsideDomain(const std::string& name, const std::string& what,
                        const std::vector<vec3>& points, const cellGrid& g,
-                       const scalar support, const vec3& up = vec3{0, 0, 0})
+                       const scalar support, std::vector<char>& warned,
+                       const double time, const vec3& up = vec3{0, 0, 0})
 {
+    warned.resize(points.size(), 0);
     const vec3 lo = toVec3(g.origin);
     const vec3 hi = lo + g.cellSize*vec3{scalar(g.nx), scalar(g.ny),
                                          scalar(g.nz)};
@@ -112,13 +117,15 @@ void warnOutsideDomain(const std::string& name, const std::string& what,
             tMax = std::min(tMax, std::max(t1, t2));
         }
         const bool meets = tMin <= tMax;
-        if (!meets)
+        if (!meets && !warned[k])
         {
+            warned[k] = 1;
             warning("Function object '" + name + "': " + what + " "
                 + std::to_string(k) + " at " + str(points[k], 10)
                 + (mag(up) > 0 ? ": its line up" : "") + " is outside the"
                 " domain " + str(lo) + " to " + str(hi) + ", where there"
-                " is no fluid: it reads 0");
+                " is no fluid: it reads 0" + (std::isnan(time) ? std::string()
+                  : " (at time " + str(time) + ", moved by its frame)"));
         }
     }
 }
@@ -294,39 +301,61 @@ pointFrame::pointFrame(const dictionary& dict, const std::string& objectName,
     const std::string frame = dict.getOrDefault<std::string>("frame", "lab");
     if (frame == "lab") return;
     const motionSet motions = caseMotions(caseDir, nDimensions);
-    std::string moving;
+    std::vector<std::string> moving, names;
+    const bodyInfo* body = nullptr;
     for (const bodyInfo& b : bodies)
     {
-        if (b.type == bodyType::fluid) continue;
-        if (motionOfBody(motions, b.name)) moving += " " + b.name;
+        names.push_back(b.name);
+        if (b.name == frame) body = &b;
+        if (b.type != bodyType::fluid && motionOfBody(motions, b.name))
+        {
+            moving.push_back(b.name);
+        }
     }
-    const std::string choices = "lab (the points stand still, the default)"
-        + (moving.empty() ? std::string(", and no body moves in this case"
-                                        " (constant/motion)")
-                          : ", or a moving body:" + moving);
-    bool isBody = false;
-    for (const bodyInfo& b : bodies)
+    const std::string head = "Function object '" + objectName + "': frame "
+        + frame + ": ";
+    const std::string choices = moving.empty()
+      ? "no body moves in this case (" + std::string(motions.empty()
+            ? "it has no constant/motion" : "constant/motion moves none of"
+              " its wall or solid bodies") + "), so leave frame out: the"
+            " points stand still in the lab"
+      : "give lab (the points stand still, the default) or a body that"
+        " constant/motion moves: " + str(moving);
+    std::string why;
+    if (!body)
     {
-        isBody = isBody || (b.name == frame && b.type != bodyType::fluid);
+        const namedMotion* asMotion = nullptr;
+        for (const namedMotion& m : motions.motions())
+        {
+            if (m.name == frame) asMotion = &m;
+        }
+        const std::string guess = dictionaryDetail::closest(frame, names);
+        why = asMotion
+            ? frame + " is a motion of constant/motion; frame names a body it"
+              " moves, " + str(asMotion->bodies)
+            : frame == "clamp"
+            ? "clamp is a frame of solidPoints (a solid's clamp); probes and"
+              " gauges name the body whose motion they follow"
+            : "there is no body " + frame + (guess.empty() ? std::string()
+              : " (did you mean " + guess + "?)");
     }
-    if (!isBody)
+    else if (body->type == bodyType::fluid)
     {
-        dict.fatalAt("frame", "Function object '" + objectName + "': frame '"
-            + frame + "' is not one of: " + choices);
+        why = frame + " is the fluid, which constant/motion cannot move";
     }
-    if (const namedMotion* m = motionOfBody(motions, frame))
+    else if (const namedMotion* m = motionOfBody(motions, frame))
     {
         motion_ = m->motion;
         motionName_ = m->name;
+        body_ = frame;
+        return;
     }
     else
     {
-        dict.fatalAt("frame", "Function object '" + objectName + "': frame "
-            + frame + ", but body '" + frame + "' is in no motion of"
-            " constant/motion, so its points would stand still: leave frame"
-            " out, or choose " + choices);
+        why = "body " + frame + " is in no motion of constant/motion, so"
+            " its points would stand still";
     }
-    body_ = frame;
+    dict.fatalAt("frame", head + why + "; " + choices);
 }
 
 
@@ -417,9 +446,10 @@ std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
     {
         here.push_back(toVec3(T.apply(toPoint(x))));
     }
-    if (!checked_)
+    if (!checked_ || frame_.moving())
     {
-        warnOutsideDomain(name(), "probe", here, s.cells.grid, 2*s.model.h);
+        warnOutsideDomain(name(), "probe", here, s.cells.grid, 2*s.model.h,
+            warned_, frame_.moving() ? s.time : std::nan(""));
         checked_ = true;
     }
     // Shepard means over the fluid within a support: sum f W V / sum W V.
@@ -563,9 +593,10 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
     {
         bases.push_back(toVec3(T.apply(toPoint(b))));
     }
-    if (!checked_)
+    if (!checked_ || frame_.moving())
     {
-        warnOutsideDomain(name(), "gauge", bases, s.cells.grid, 0, up);
+        warnOutsideDomain(name(), "gauge", bases, s.cells.grid, 0, warned_,
+            frame_.moving() ? s.time : std::nan(""), up);
         checked_ = true;
     }
     std::vector<scalar> heights(locations_.size(), 0);
@@ -628,9 +659,17 @@ forces::forces(std::string name, const dictionary& dict,
                const std::vector<bodyInfo>& bodies, const int nDimensions)
 :
     table(std::move(name), dict, caseDir, startTimeName, "force.dat"),
-    body_(-1)
+    body_(-1),
+    frame_(dict, this->name(), caseDir, nDimensions, bodies)
 {
-    dict.checkKeywords(keywords({"body", "CofR"}));
+    dict.checkKeywords(keywords({"body", "CofR", "frame"}));
+    if (dict.found("frame") && !dict.found("CofR"))
+    {
+        dict.fatalAt("frame", "Function object '" + this->name() + "': frame"
+            " moves the point CofR that the moment is taken about, and there"
+            " is no CofR (the force itself, in the lab's axes, is the same"
+            " in every frame): give CofR or leave frame out");
+    }
     const std::string body = dict.get<std::string>("body");
     if (dict.found("CofR"))
     {
@@ -694,6 +733,7 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
     // acting at its centre.
     struct forceMoment { sumVec F, M; };
     forceMoment sum{{0, 0, 0}, {0, 0, 0}};
+    const vec3 CofR = toVec3(frame_.at(s.time).apply(toPoint(CofR_)));
 
     withKernel(m, [&](auto kernel)
     {
@@ -740,7 +780,7 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
             {
                 const sumVec f = toSum(onWall(w));
                 if (!moment_) return forceMoment{f, {0, 0, 0}};
-                const sumVec arm = toSum(toVec3(pf.position[w]) - CofR_);
+                const sumVec arm = toSum(toVec3(pf.position[w]) - CofR);
                 return forceMoment{f, cross(arm, f)};
             },
             forceMoment{{0, 0, 0}, {0, 0, 0}},
@@ -773,7 +813,8 @@ void forces::writeFileHeader(std::ostream& os, const std::size_t file) const
         os << "# Time Fx Fy Fz\n";
         return;
     }
-    os << "# Moment about CofR " << str(CofR_, 10) << "\n"
+    os << frame_.headerLine()
+       << "# Moment about CofR " << str(CofR_, 10) << "\n"
        << "# Time Mx My Mz\n";
 }
 
@@ -899,7 +940,9 @@ solidPoints::solidPoints(std::string name, const dictionary& dict,
     {
         dict.fatalAt("frame", "Function object '" + this->name() + "': frame"
             " '" + frame + "' is not one of: lab (x - X, the default), clamp"
-            " (relative to the motion of the solid's clamp, in its axes)");
+            " (relative to the motion of the solid's clamp, in its axes)."
+            " A body's name is the frame of probes and gauges, not of"
+            " solidPoints, which follows its own solid's clamp");
     }
     if (frame == "clamp")
     {

@@ -86,6 +86,9 @@ writeFsiControl "$c" 4 1e-4 2 5000 \
     '             probeLocations ((0.35 0.02 0) (0.05 0.02 0)); frame tank; }' \
     '    labProbes { type probes; writeControl runTime; writeInterval 0.05;' \
     '             probeLocations ((0.344248199 0.045743382 0) (0.048805873 -0.006351072 0)); }' \
+    '    pivotMoment { type forces; body tank; CofR (0.2 0 0); writeControl runTime; writeInterval 0.05; }' \
+    '    tankMoment { type forces; body tank; CofR (0.3 0.05 0); frame tank;' \
+    '             writeControl runTime; writeInterval 0.05; }' \
     '}'
 generateParticles -case "$c" > "$scratch/log.genWater" 2>&1
 check "still water: generateParticles" [ $? -eq 0 ]
@@ -135,6 +138,20 @@ check "frame tank: the probes read the hydrostatic pressure within 3 % ($tp0, $t
     python3 -c "import sys; a, b = map(float, '$hydro'.split()); sys.exit(0 if abs($tp0/a - 1) < 0.03 and abs($tp1/b - 1) < 0.03 else 1)"
 expectIn "frame tank: the header says how the points move" "$c/postProcessing/tankProbes/0/p.dat" \
     "^# The points move with body tank \\(motion roll\\)"
+# forces with frame tank: the moment about a CofR that turns with the
+# tank, P = o + R (P0 - o), is the pivot's less (P - o) x F (t = 4 s).
+pm="$c/postProcessing/pivotMoment/0"
+read fx fy <<< "$(awk '!/^#/ { a = $2; b = $3 } END { print a, b }' "$pm/force.dat")"
+mo=$(awk '!/^#/ { a = $4 } END { print a }' "$pm/moment.dat")
+mp=$(awk '!/^#/ { a = $4 } END { print a }' "$c/postProcessing/tankMoment/0/moment.dat")
+expected=$(python3 -c "
+import math
+c, s = math.cos(math.radians(10)), math.sin(math.radians(10))
+px, py = 0.1*c - 0.05*s, 0.1*s + 0.05*c
+print(repr($mo - (px*$fy - py*$fx)))")
+echo "    moment about the turning point at t = 4 s: $mp N m/m; from the pivot's: $expected"
+check "frame tank: forces take the moment about a CofR that turns with the tank ($mp = $expected N m/m)" \
+    python3 -c "import sys; sys.exit(0 if abs($mp - $expected) < 1e-6*abs($mo) + 1e-9 else 1)"
 # frame of a body in no motion, of the fluid, of a body the case has not.
 b="$scratch/stillWaterBadFrame"
 rm -rf "$b"; mkdir -p "$b"; cp -r "$c/system" "$c/constant" "$c/0" "$b/"
@@ -142,13 +159,18 @@ rm "$b/constant/motion"
 sphVcpmFsi -case "$b" > "$scratch/log.badTankFrame" 2>&1
 check "frame tank, no motion: exit status 1" [ $? -eq 1 ]
 expectIn "frame tank, no motion: says what to do" "$scratch/log.badTankFrame" \
-    "Function object 'tankLevels': frame tank, but body 'tank' is in no motion of constant/motion, so its points would stand still: leave frame out"
+    "Function object 'tankLevels': frame tank: body tank is in no motion of constant/motion, so its points would stand still; no body moves in this case \\(it has no constant/motion\\), so leave frame out"
 cp "$c/constant/motion" "$b/constant/motion"
-sed -i 's/frame tank; }/frame water; }/' "$b/system/controlDict"
-sphVcpmFsi -case "$b" > "$scratch/log.badTankFrame" 2>&1
-check "frame water: exit status 1" [ $? -eq 1 ]
-expectIn "frame water: names the moving bodies" "$scratch/log.badTankFrame" \
-    "frame 'water' is not one of: lab \\(the points stand still, the default\\), or a moving body: tank\$"
+badFrame()   # badFrame <frame> <pattern>: the error for frame <frame>
+{
+    sed -i "s/frame [a-z]*; }/frame $1; }/" "$b/system/controlDict"
+    sphVcpmFsi -case "$b" > "$scratch/log.badTankFrame" 2>&1
+    check "frame $1: exit status 1" [ $? -eq 1 ]
+    expectIn "frame $1: says why, and the choices" "$scratch/log.badTankFrame" "$2"
+}
+badFrame water "frame water: water is the fluid, which constant/motion cannot move; give lab \\(the points stand still, the default\\) or a body that constant/motion moves: \\(tank\\)\$"
+badFrame tnak "frame tnak: there is no body tnak \\(did you mean tank\\?\\); give lab"
+badFrame roll "frame roll: roll is a motion of constant/motion; frame names a body it moves, \\(tank\\); give lab"
 # A restart of the tilted tank weighs c0 against the flow as read, not the
 # tilted water's height (which would call for a c0 the start did not).
 r="$scratch/stillWaterRestart"
@@ -158,6 +180,17 @@ sphVcpmFsi -case "$r" > "$scratch/log.waterRestart" 2>&1
 check "still water: the restart runs" grep -q '^End' "$scratch/log.waterRestart"
 check "still water: the restart at 10 degrees gives no speed-of-sound warning" \
     bash -c "! grep -q 'speed of sound' '$scratch/log.waterRestart'"
+# constant/motion changed after the run: the tank would go on by the new
+# motion's increments from where the old one left it (at 10 degrees where
+# the new puts it at 12), off the motion the tank-frame probes follow.
+r="$scratch/stillWaterChanged"
+cp -r "$c" "$r"
+sed -i 's/^endTime .*/endTime 4.01;/' "$r/system/controlDict"
+sed -i 's/amplitude 10;/amplitude 12;/' "$r/constant/motion"
+sphVcpmFsi -case "$r" > "$scratch/log.waterChanged" 2>&1
+check "still water, motion changed: the restart stops (exit 1)" [ $? -eq 1 ]
+expectIn "still water, motion changed: says how far and what to do" "$scratch/log.waterChanged" \
+    "Wall tank of the restart time 4 is up to 0.01[0-9]* m \\([0-9.]+ dp\\) from where constant/motion puts it at that time: the motion has changed since the run that wrote it"
 
 # 2. A clamped strip turned rigidly by 90 degrees
 c="$scratch/strip"
@@ -240,6 +273,19 @@ check "strip: solidPoints frame clamp: a small lag while it turns ($relMax m, th
     awk -v m="$relMax" 'BEGIN { exit !(m > 0 && m < 0.005) }'
 expectIn "strip: frame clamp: the header says so" "$c/postProcessing/turns/0/displacement.dat" \
     "^# Displacement R\\^T \\(x - T\\(X\\)\\) of solid strip relative to its clamp's motion turn"
+# A restart of the turned strip runs on; with the turn's table changed
+# after the run (to 80 degrees) its clamp is off the motion: an error.
+r="$scratch/stripRestart"
+cp -r "$c" "$r"
+sed -i 's/^endTime .*/endTime 2.001;/' "$r/system/controlDict"
+sphVcpmFsi -case "$r" > "$scratch/log.stripRestart" 2>&1
+check "strip: the restart with its motion unchanged runs (exit $?)" grep -q '^End' "$scratch/log.stripRestart"
+rm -rf "$r"/2.001
+awk '{ print $1, $2*80/90 }' "$c/constant/turn.dat" > "$r/constant/turn.dat"
+sphVcpmFsi -case "$r" > "$scratch/log.stripChanged" 2>&1
+check "strip, motion changed: the restart stops (exit 1)" [ $? -eq 1 ]
+expectIn "strip, motion changed: names the clamp" "$scratch/log.stripChanged" \
+    "The clamp of solid strip of the restart time 2 is up to [0-9.e-]+ m .* from where constant/motion puts it"
 # frame clamp for a solid in no motion, and a frame that is neither.
 b="$scratch/stripBadFrame"
 rm -rf "$b"; cp -r "$c" "$b"; rm -rf "$b"/[1-9]* "$b/postProcessing" "$b/constant/motion"
