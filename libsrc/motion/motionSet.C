@@ -113,12 +113,20 @@ motionSet motionSet::readIfPresent(const fs::path& caseDir,
 
 const rigidMotion* motionSet::motionOf(const std::string& bodyName) const
 {
+    const namedMotion* m = namedMotionOf(bodyName);
+    return m ? &m->motion : nullptr;
+}
+
+
+const namedMotion* motionSet::namedMotionOf(const std::string& bodyName)
+    const
+{
     for (const namedMotion& m : motions_)
     {
         if (std::find(m.bodies.begin(), m.bodies.end(), bodyName)
          != m.bodies.end())
         {
-            return &m.motion;
+            return &m;
         }
     }
     return nullptr;

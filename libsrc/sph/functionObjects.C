@@ -206,17 +206,6 @@ motionSet caseMotions(const std::filesystem::path& caseDir,
     return motions;
 }
 
-// The motion that moves body, nullptr when it does not move.
-const namedMotion* motionOfBody(const motionSet& motions,
-                                const std::string& body)
-{
-    for (const namedMotion& m : motions.motions())
-    {
-        if (&m.motion == motions.motionOf(body)) return &m;
-    }
-    return nullptr;
-}
-
 // Sums over all particles accumulate in double in every build (a float
 // sum of a million terms keeps only a few digits).
 using sumVec = Vec3<double>;
@@ -307,7 +296,7 @@ pointFrame::pointFrame(const dictionary& dict, const std::string& objectName,
     {
         names.push_back(b.name);
         if (b.name == frame) body = &b;
-        if (b.type != bodyType::fluid && motionOfBody(motions, b.name))
+        if (b.type != bodyType::fluid && motions.namedMotionOf(b.name))
         {
             moving.push_back(b.name);
         }
@@ -343,7 +332,7 @@ pointFrame::pointFrame(const dictionary& dict, const std::string& objectName,
     {
         why = frame + " is the fluid, which constant/motion cannot move";
     }
-    else if (const namedMotion* m = motionOfBody(motions, frame))
+    else if (const namedMotion* m = motions.namedMotionOf(frame))
     {
         motion_ = m->motion;
         motionName_ = m->name;
@@ -446,12 +435,8 @@ std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
     {
         here.push_back(toVec3(T.apply(toPoint(x))));
     }
-    if (!checked_ || frame_.moving())
-    {
-        warnOutsideDomain(name(), "probe", here, s.cells.grid, 2*s.model.h,
-            warned_, frame_.moving() ? s.time : std::nan(""));
-        checked_ = true;
-    }
+    warnOutsideDomain(name(), "probe", here, s.cells.grid, 2*s.model.h,
+        warned_, frame_.moving() ? s.time : std::nan(""));
     // Shepard means over the fluid within a support: sum f W V / sum W V.
     const std::size_t n = locations_.size();
     std::vector<scalar> p(n, 0), rho(n, 0);
@@ -593,12 +578,8 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
     {
         bases.push_back(toVec3(T.apply(toPoint(b))));
     }
-    if (!checked_ || frame_.moving())
-    {
-        warnOutsideDomain(name(), "gauge", bases, s.cells.grid, 0, warned_,
-            frame_.moving() ? s.time : std::nan(""), up);
-        checked_ = true;
-    }
+    warnOutsideDomain(name(), "gauge", bases, s.cells.grid, 0, warned_,
+        frame_.moving() ? s.time : std::nan(""), up);
     std::vector<scalar> heights(locations_.size(), 0);
     withKernel(s.model, [&](auto kernel)
     {
@@ -947,7 +928,7 @@ solidPoints::solidPoints(std::string name, const dictionary& dict,
     if (frame == "clamp")
     {
         const motionSet motions = caseMotions(caseDir, nDimensions_);
-        if (const namedMotion* m = motionOfBody(motions, body_))
+        if (const namedMotion* m = motions.namedMotionOf(body_))
         {
             clampMotion_ = m->motion;
             clampMotionName_ = m->name;
