@@ -277,6 +277,22 @@ void particleGenerator::readBody
     {
         if (const dictionary* props = solidPropertiesOf(name))
         {
+            // The solver takes the material's rho (and sets the particles'
+            // mass from it): a second value here would hold only in 0/.
+            if (dict.found("rho") && props->found("rho"))
+            {
+                const scalar material = props->getDimensioned<scalar>("rho",
+                    dimensions::density());
+                if (std::fabs(spec.rho - material) > 1e-9*std::fabs(material))
+                {
+                    dict.fatalAt("rho", "Keyword 'rho' of solid body '" + name
+                        + "': " + shapeDetail::str(spec.rho) + " differs from"
+                          " rho " + shapeDetail::str(material) + " of "
+                        + props->name() + ", which the solver uses (it sets"
+                          " the particles' mass from it): give the density"
+                          " in one place, constant/solidProperties");
+                }
+            }
             spec.material.emplace(vcpmMaterial::read(*props, spec.name,
                 nDimensions_, spec.rho, dp));
         }
@@ -709,6 +725,7 @@ void particleGenerator::generate()
             s.nDropped = label(nNodes - nodes.size());
             s.gapExcess = gapExcess;
             s.volume = body.size()*cellVolume;
+            if (type == bodyType::wall) s.U = spec.U;
             s.shapeVolume = spec.shapes.volume();
             if (type == bodyType::solid)
             {
@@ -764,6 +781,14 @@ void particleGenerator::printSummary(std::ostream& os) const
         {
             os << ", " << s.nDropped << " dropped next to "
                << (s.type == bodyType::wall ? "solids" : "walls or solids");
+        }
+        if (mag(s.U) > 0)
+        {
+            // A wall stays in place: its U is what the fluid sees at its
+            // face (a belt, a cavity's lid), not a motion.
+            os << ", surface velocity U (" << s.U.x << ' ' << s.U.y << ' '
+               << s.U.z << ") m/s, in place (a motion goes in"
+               << " constant/motion)";
         }
         if (s.gapExcess > gapExcessNoted)
         {

@@ -77,6 +77,17 @@ vcpmMaterial solidBodySet::readMaterial
     // particles' mass (a body-level rho).
     const scalar rho = props.found("rho")
       ? props.getDimensioned<scalar>("rho", dimensions::density()) : massRho;
+    // solidProperties changed since generateParticles: its rho wins, said.
+    if (massRho > 0 && std::fabs(rho - massRho) > 1e-6*rho)
+    {
+        std::ostringstream os;
+        os.precision(6);
+        os << "Solid " << name << ": its particles' mass gives rho = "
+           << massRho << " kg/m^3 (as generated), constant/solidProperties"
+           << " rho = " << rho << ": the solver uses " << rho
+           << " and sets the mass from it";
+        warning(os.str(), props.file(), props.line());
+    }
     damping = props.getOrDefault<scalar>("damping", 0);
     if (!(damping >= 0))
     {

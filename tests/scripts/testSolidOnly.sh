@@ -415,4 +415,18 @@ sphVcpmFsi -case "$w" > "$scratch/log.ownWeight" 2>&1
 expectIn "E far too low for its own weight: warned with the numbers" "$scratch/log.ownWeight" \
     "Solid beam: its own weight strains it by about rho \|g\| L/E = 5\.89 \(rho = 1e\+03 kg/m\^3, L = 0\.06 m along g, E = 100 Pa\)"
 check "E = 1e8: no such warning" bash -c "! grep -q 'its own weight strains' '$scratch/log.run'"
+# solidProperties' rho changed after generateParticles: the solver takes it,
+# sets the mass from it (1200 x 0.01^2 = 0.12) and says so; none when equal.
+m="$scratch/materialRho"
+cp -r "$c" "$m"; rm -rf "$m"/0.* "$m/postProcessing"
+sed -i 's/^beam { rho 1000;/beam { rho 1200;/' "$m/constant/solidProperties"
+sed -i 's/^endTime .*/endTime 1e-4;/; s/^writeInterval .*/writeInterval 1e-4;/' "$m/system/controlDict"
+sphVcpmFsi -case "$m" > "$scratch/log.materialRho" 2>&1
+expectIn "solidProperties rho changed after generation: warned" "$scratch/log.materialRho" \
+    "Solid beam: its particles' mass gives rho = 1000 kg/m\^3 \(as generated\), constant/solidProperties rho = 1200: the solver uses 1200"
+fieldValues "$m/0.0001/beam/mass" > "$scratch/materialRho.mass"
+check "solidProperties rho changed after generation: every mass 0.12 at 1e-4" \
+    awk '{ n++; if ($1 < 0.1199999 || $1 > 0.1200001) bad++ } END { exit !(n == 372 && !bad) }' \
+        "$scratch/materialRho.mass"
+check "rho as generated: no such warning" bash -c "! grep -q \"particles' mass gives rho\" '$scratch/log.run'"
 finish

@@ -439,6 +439,37 @@ blowUpPair()    # blowUpPair <timeScheme>
 blowUpPair symplectic
 blowUpPair verlet
 
+# A wall's U is a surface velocity it keeps in place (a belt; a cavity's
+# lid): generateParticles notes it, and after 0.1 s the tank is where it
+# was, every particle still at U, and the water in the floor's first three
+# layers dragged along (+x) more than the water above.
+rm -rf "$scratch/c"
+cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/hydrostaticTank2D" "$scratch/c"
+(cd "$scratch/c" && ./Allclean > /dev/null 2>&1)
+sed -i 's/^dp .*/dp 0.02;/; s/^        type        wall;/        type        wall;\n        U           (0.2 0 0);/' \
+    "$scratch/c/system/generateParticlesDict"
+sed -i 's/^endTime .*/endTime 0.1;/; s/^writeInterval .*/writeInterval 0.1;/; s/^writeFormat .*/writeFormat ascii;/; /^functions/,$d' \
+    "$scratch/c/system/controlDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+check "a wall with U: the run ends" grep -q '^End' "$scratch/c/log.solver"
+expectIn "a wall with U: generateParticles notes its surface velocity" "$scratch/c/log.generateParticles" \
+    "tank \(wall\): 408 particles.*surface velocity U \(0\.2 0 0\) m/s, in place"
+bodyTable "$scratch/c/0" tank position > "$scratch/belt.0"
+bodyTable "$scratch/c/0.1" tank position > "$scratch/belt.1"
+check "a wall with U: in place after 0.1 s" [ -s "$scratch/belt.0" ]
+check "a wall with U: in place after 0.1 s (positions by id)" cmp -s "$scratch/belt.0" "$scratch/belt.1"
+fieldValues "$scratch/c/0.1/tank/U" > "$scratch/belt.wallU"
+check "a wall with U: every particle keeps U" \
+    awk '{ n++; if ($0 != "0.2 0 0") bad++ } END { exit !(n == 408 && !bad) }' "$scratch/belt.wallU"
+fieldValues "$scratch/c/0.1/water/position" > "$scratch/belt.x"
+fieldValues "$scratch/c/0.1/water/U" > "$scratch/belt.U"
+check "a wall with U: the water on the floor dragged along, more than above" \
+    awk 'FNR == NR { y[FNR] = $2; next }
+         y[FNR] < 0.06 { n++; lo += $1 } y[FNR] > 0.3 { m++; hi += $1 }
+         END { print "    mean u: floor " lo/n ", above " hi/m
+               exit !(n > 0 && m > 0 && lo/n > 0.05 && lo/n > 2*hi/m) }' \
+        "$scratch/belt.x" "$scratch/belt.U"
+
 # Particles leaving the domain: water thrown up out of the open tank of
 # hydrostaticTank2D past the domain's top is removed and counted, and the
 # run goes on.

@@ -215,6 +215,8 @@ TEST(particleGenerator, exampleCase)
               std::string::npos) << log;
     EXPECT_NE(log.find("Total: " + std::to_string(40 + 1116 + 1200 - nHole)
                        + " particles in 3 bodies"), std::string::npos) << log;
+    // A fluid's U is its initial velocity: no note (walls only).
+    EXPECT_EQ(log.find("surface velocity"), std::string::npos) << log;
 
     // 0/ as written reads back (bodies come back by name).
     gen.write();
@@ -477,6 +479,25 @@ TEST(particleGenerator, controlDictWriteSettings)
 }
 
 
+TEST(particleGenerator, wallSurfaceVelocityNoted)
+{
+    // A wall stays where it is: its U is what the fluid sees at its face
+    // (a belt, a cavity's lid), which the log says.
+    testCase c(replaced(exampleDict, "type        wall;",
+                        "type        wall; U (0.25 0 0);"));
+    particleGenerator gen(c.path());
+    gen.generate();
+    expectFields(bodyNamed(gen, "tank"), {0.25, 0, 0}, 1000);
+    std::ostringstream os;
+    gen.printSummary(os);
+    EXPECT_NE(os.str().find("    tank (wall): 1116 particles, volume 0.1116"
+                            " m^2 (shapes 0.1116 m^2, error +0.00 %),"
+                            " surface velocity U (0.25 0 0) m/s, in"
+                            " place (a motion goes in constant/motion)\n"),
+              std::string::npos) << os.str();
+}
+
+
 TEST(particleGenerator, propertyFileDensities)
 {
     // rho0 without dimensions, and a dimensioned solid rho.
@@ -486,8 +507,9 @@ TEST(particleGenerator, propertyFileDensities)
     gen.generate();
     EXPECT_EQ(bodyNamed(gen, "water").scalarField("rho")[0], 997);
     // rho equal to rho0 may be written out.
-    testCase same(replaced(exampleDict, "type        wall;",
-        "type        wall; rho 997;"), "rho0 997;\n",
+    testCase same(replaced(replaced(exampleDict, "type        wall;",
+        "type        wall; rho 997;"), "type        solid;",
+        "type        solid; rho 1200;"), "rho0 997;\n",
         "gate { rho 1200; E 1e9; nu 0.3; }\n");
     EXPECT_NO_THROW(particleGenerator(same.path()).generate());
     EXPECT_EQ(bodyNamed(gen, "tank").scalarField("rho")[0], 997);
@@ -627,6 +649,12 @@ std::vector<badCase> badCases()
          "type        fluid;\n        rho 800;"), where::dict, "rho 800",
          {"Keyword 'rho' of fluid body 'water': 800 differs from rho0 1000",
           "one fluid phase", "or set rho0"}},
+        // The solver takes the material's rho: a second one would hold
+        // only in 0/ (the masses), and be undone without a word.
+        {"solidRhoOtherThanMaterial", replaced(d, "type        solid;",
+         "type        solid; rho 900;"), where::dict, "rho 900",
+         {"Keyword 'rho' of solid body 'gate': 900 differs from rho 2700",
+          "constant/solidProperties/gate", "give the density in one place"}},
         {"velocityOutOfPlane", replaced(d, "U           (0.5 0 0);",
          "U           (0.5 0 1);"), where::dict, "(0.5 0 1)",
          {"Keyword 'U'", "z component"}},
