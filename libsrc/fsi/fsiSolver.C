@@ -395,6 +395,7 @@ void fsiSolver::readStartTime()
     if (freshStart_)
     {
         motions_.placeSolids(*solids_, time_);
+        motions_.checkWavemakerDepths(bodies, model_.g, dp);
     }
     else
     {

@@ -7,6 +7,7 @@
 #include "solidBodySet.H"
 #include "timeDirectory.H"
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <unordered_map>
@@ -79,6 +80,77 @@ prescribedMotions::prescribedMotions
     for (const particleBody& b : bodies)
     {
         byBody_.push_back(set_.motionOf(b.name()));
+    }
+}
+
+
+void prescribedMotions::checkWavemakerDepths
+(
+    const std::vector<particleBody>& bodies,
+    const vec3& g,
+    const scalar dp
+) const
+{
+    const scalar gMag = mag(g);
+    if (!(gMag > 0)) return;
+    const vec3 up = -g/gMag;
+    for (const namedMotion& m : set_.motions())
+    {
+        const scalar depth = m.motion.wavemakerDepth();
+        if (!(depth > 0)) continue;
+        // The wavemaker's box across g, grown by 3 dp.
+        vec3 lo{1e300, 1e300, 1e300}, hi = -lo;
+        for (const particleBody& b : bodies)
+        {
+            if (std::find(m.bodies.begin(), m.bodies.end(), b.name())
+                == m.bodies.end()) continue;
+            for (const point& p : b.position())
+            {
+                const vec3 x = toVec3(p);
+                for (int d = 0; d < 3; ++d)
+                {
+                    lo[d] = std::min(lo[d], x[d]);
+                    hi[d] = std::max(hi[d], x[d]);
+                }
+            }
+        }
+        // Its box's corners across g (g along an axis, as in a flume: the
+        // box itself, flat along g).
+        const vec3 loA = lo - dot(lo, up)*up, hiA = hi - dot(hi, up)*up;
+        scalar bottom = 1e300, top = -1e300;
+        for (const particleBody& b : bodies)
+        {
+            if (b.type() != bodyType::fluid) continue;
+            for (const point& p : b.position())
+            {
+                const vec3 x = toVec3(p);
+                // Across g only: the water's whole column beside it.
+                const vec3 across = x - dot(x, up)*up;
+                bool near = true;
+                for (int d = 0; d < 3 && near; ++d)
+                {
+                    const scalar a = std::min(loA[d], hiA[d]) - 3*dp;
+                    const scalar c = std::max(loA[d], hiA[d]) + 3*dp;
+                    near = across[d] >= a && across[d] <= c;
+                }
+                if (!near) continue;
+                bottom = std::min(bottom, dot(x, up));
+                top = std::max(top, dot(x, up));
+            }
+        }
+        if (top < bottom) continue;   // no water beside it
+        const scalar water = top - bottom + dp;
+        if (std::fabs(water - depth) <= std::max(1.5*dp, 0.02*depth))
+        {
+            continue;
+        }
+        warning("Motion " + m.name + ": its wavemaker's depth is "
+            + str(depth) + " m, but the water beside its bodies is "
+            + str(water, 4) + " m deep (the fluid within 3 dp of them"
+            " across g, from its lowest to its highest particle, +- dp/2)."
+            " The stroke, and so the waves' height, follow the depth given:"
+            " set depth to the still-water depth at the paddle",
+            m.file, m.line);
     }
 }
 

@@ -50,8 +50,24 @@ vec3 lattice::node(std::int64_t i, std::int64_t j, std::int64_t k) const
 }
 
 
-std::vector<vec3> lattice::fill(const region& reg, const std::string& what)
-    const
+void lattice::tooManyNodes(const region& reg, const std::string& what,
+                           const std::size_t maxNodes) const
+{
+    const boundBox bb = reg.bounds();
+    std::ostringstream os;
+    os << what << " holds more than " << maxNodes << " particles at dp "
+       << dp_ << " (its bounds (" << bb.min.x << ' ' << bb.min.y << ' '
+       << bb.min.z << ") to (" << bb.max.x << ' ' << bb.max.y << ' '
+       << bb.max.z << ")), more than the memory this machine has free can"
+       << " take: lengths are in metres (sizes written in millimetres give "
+       << (nDimensions_ == 2 ? "10^6" : "10^9") << " times the particles)."
+       << " Check the sizes (an STL's scale) and dp";
+    fatalError(os.str());
+}
+
+
+std::vector<vec3> lattice::fill(const region& reg, const std::string& what,
+                                const std::size_t maxNodes) const
 {
     std::vector<vec3> nodes;
     const boundBox bb = reg.bounds();
@@ -82,6 +98,14 @@ std::vector<vec3> lattice::fill(const region& reg, const std::string& what)
         }
         lo[d] = std::int64_t(std::floor(a)) - 1;
         hi[d] = std::int64_t(std::ceil(b)) + 1;
+    }
+    // Said before the fill where the shapes' volume is known (a fill of
+    // 10^9 nodes takes minutes), else during it.
+    const scalar volume = reg.volume();
+    if (volume > 0
+     && volume/std::pow(dp_, nDimensions_) > 1.01*scalar(maxNodes))
+    {
+        tooManyNodes(reg, what, maxNodes);
     }
 
     // Rows along x tested in parallel (an STL inside test costs far more
@@ -121,6 +145,10 @@ std::vector<vec3> lattice::fill(const region& reg, const std::string& what)
                     nodes.push_back(node(lo[0] + i, j, k));
                 }
             }
+        }
+        if (nodes.size() > maxNodes)
+        {
+            tooManyNodes(reg, what, maxNodes);
         }
     }
 

@@ -165,6 +165,16 @@ void rigidMotion::setRotation
 }
 
 
+scalar rigidMotion::wavemakerDepth() const
+{
+    for (const auto* f : {&angle_, &offset_})
+    {
+        if (*f && (*f)->wavemakerDepth() > 0) return (*f)->wavemakerDepth();
+    }
+    return 0;
+}
+
+
 std::string rigidMotion::note() const
 {
     std::string n;

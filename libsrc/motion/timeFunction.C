@@ -271,6 +271,7 @@ void timeFunction::readWavemaker(const dictionary& dict,
         dict.getDimensioned<scalar>("waveHeight", dimensions::length());
     const scalar depth =
         dict.getDimensioned<scalar>("depth", dimensions::length());
+    wavemakerDepth_ = depth;
     for (const auto& [key, v] : {std::pair<const char*, scalar>{"waveHeight",
         height}, {"depth", depth}})
     {

@@ -470,6 +470,24 @@ check "a wall with U: the water on the floor dragged along, more than above" \
                exit !(n > 0 && m > 0 && lo/n > 0.05 && lo/n > 2*hi/m) }' \
         "$scratch/belt.x" "$scratch/belt.U"
 
+# A wavemaker's depth is the water's at the paddle (waveFlume2D: 0.25 m):
+# one of 0.5 m (the stroke, and the waves, 32 % too low) is warned of.
+rm -rf "$scratch/c"
+cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/waveFlume2D" "$scratch/c"
+(cd "$scratch/c" && ./Allclean > /dev/null 2>&1)
+sed -i 's/^endTime .*/endTime 0.001;/; /^functions/,$d' "$scratch/c/system/controlDict"
+(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
+check "pistonWave depth 0.25 in 0.25 m of water: the run ends" grep -q '^End' "$scratch/c/log.solver"
+check "pistonWave depth 0.25 in 0.25 m of water: no depth warning" \
+    bash -c "! grep -q \"wavemaker's depth\" '$scratch/c/log.solver'"
+rm -rf "$scratch/c/0.001"
+sed -i 's/^\( *depth *\)0\.25;/\10.5;/' "$scratch/c/constant/motion"
+(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
+expectIn "pistonWave depth 0.5 in 0.25 m of water: warned with both" "$scratch/c/log.solver" \
+    "Motion piston: its wavemaker's depth is 0\.5 m, but the water beside its bodies is 0\.25 m deep"
+expectIn "pistonWave depth 0.5 in 0.25 m of water: names constant/motion" "$scratch/c/log.solver" \
+    "constant/motion at line"
+
 # Particles leaving the domain: water thrown up out of the open tank of
 # hydrostaticTank2D past the domain's top is removed and counted, and the
 # run goes on.

@@ -283,4 +283,16 @@ TEST(lattice, limits)
     {
         lattice({0, 0, 0}, 0, 2);
     }), {"dp must be positive"});
+    // More nodes inside than the memory takes: stopped during the fill
+    // (the 1200 nodes of a box fit in 1200, not in 1199), with the sizes.
+    const region box = shapesRegion(boxText({0, 0, 0}, {0.4, 0.3, 0}), 2,
+                                    0.01);
+    EXPECT_EQ(lattice({0, 0, 0}, 0.01, 2).fill(box, "box", 1200).size(),
+              1200u);
+    expectMessage(catchFatal([&]
+    {
+        lattice({0, 0, 0}, 0.01, 2).fill(box, "body 'water' (fluid)", 1199);
+    }), {"body 'water' (fluid) holds more than 1199 particles at dp 0.01",
+         "(its bounds (0 0 0) to (0.4 0.3 0))", "lengths are in metres",
+         "millimetres give 10^6 times"});
 }

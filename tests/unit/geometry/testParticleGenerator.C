@@ -318,6 +318,45 @@ TEST(particleGenerator, fluidOverlappingSolid)
 }
 
 
+TEST(particleGenerator, unequalGapsAcrossASolidAreWarned)
+{
+    // A plate 0.75 fluid spacings thick (3 layers of dp/4) in water that
+    // spans it: its left face half a spacing from the water's nodes, its
+    // right face a quarter spacing off them, so the first layers stand
+    // about 0 and 0.27 dp beyond the contact gap. Still water pushes such
+    // a plate toward its wider gap (a new user's bent 8.5 mm in 1 s); the
+    // warning gives the move of the solid that evens them out, and moved
+    // so, it is not warned of.
+    std::string dict = replaced(exampleDict, "max (0.4 0.3 0); }",
+                                "max (0.8 0.3 0); }");
+    const std::string plate = replaced(dict,
+        "min (0.5 0 0); max (0.52 0.2 0);", "min (0.5 0 0); max (0.5075 0.2 0);");
+    testCase c(replaced(plate, "        latticeOrigin (0.5 0 0);\n",
+                        "        dp 0.0025;\n        latticeOrigin (0.5 0 0);\n"));
+    testing::internal::CaptureStderr();
+    particleGenerator(c.path()).generate();
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("Fluid body 'water' lies on both sides of solid 'gate'"
+                       " along x, with gaps that differ"), std::string::npos)
+        << err;
+    EXPECT_NE(err.find("0.0124 dp beyond the contact gap on the -x face and"
+                       " 0.268 dp on the +x face"), std::string::npos) << err;
+    EXPECT_NE(err.find("The solid moved by 0.00128 m along x (its shapes,"
+                       " clamp and latticeOrigin together) makes the two"
+                       " equal (0.14 dp each)"), std::string::npos) << err;
+
+    testCase moved(replaced(replaced(dict, "min (0.5 0 0); max (0.52 0.2 0);",
+                                     "min (0.50128 0 0); max (0.50878 0.2 0);"),
+        "        latticeOrigin (0.5 0 0);\n",
+        "        dp 0.0025;\n        latticeOrigin (0.50128 0 0);\n"));
+    testing::internal::CaptureStderr();
+    particleGenerator(moved.path()).generate();
+    const std::string movedErr = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(movedErr.find("with gaps that differ"), std::string::npos)
+        << movedErr;
+}
+
+
 TEST(particleGenerator, gapExcessIsTakenFaceByFace)
 {
     // A gate of dp/2, 0.025 m thick, in water spanning it: its left face
@@ -701,6 +740,12 @@ std::vector<badCase> badCases()
          {"Keyword 'lattice'", "solid 'gate' is 2D", "square2D"},
          fluidProperties,
          "gate { rho 2700; E 1e9; nu 0.3; lattice simpleCubic3D; }\n"},
+        // Drawn in millimetres with dp in metres: refused before the fill
+        // (1.9e9 nodes, 310 GB), not left to the out-of-memory killer.
+        {"sizesInMillimetres", replaced(d, "max (0.4 0.3 0); }",
+         "max (440 440 0); }"), where::dict, "    water",
+         {"body 'water' (fluid) holds more than", "particles at dp 0.01",
+          "memory this machine has free", "lengths are in metres"}},
         {"latticeTooLarge", replaced(d, "max (0.4 0.3 0); }",
          "max (4e5 3e5 0); }"), where::dict, "    water",
          {"body 'water' (fluid)", "span more than 2^31 lattice nodes"}},
