@@ -406,6 +406,7 @@ void fsiSolver::readStartTime()
     {
         coupling_ = std::make_unique<fluidSolidCoupling>(*solids_);
         coupling_->setClampMotions(motions_.clampMotions(*solids_));
+        noteLightSolids(bodies);
         particles_.link.assign(nTotal, -1);
         for (const solidBody& b : solids_->bodies())
         {
@@ -520,6 +521,36 @@ void fsiSolver::readStartTime()
     if (postProcessTime_.empty())
     {
         checkClampsFollowWalls();
+    }
+}
+
+
+void fsiSolver::noteLightSolids(const std::vector<particleBody>& bodies)
+{
+    const bool fluid = std::any_of(bodies.begin(), bodies.end(),
+        [](const particleBody& b) { return b.type() == bodyType::fluid; });
+    if (!fluid) return;
+    for (const solidBody& b : solids_->bodies())
+    {
+        const scalar ratio = b.solid->material().rho/model_.rho0;
+        if (ratio >= 2) continue;
+        std::ostringstream os;
+        os << "Solid " << b.name << ": rho " << str(b.solid->material().rho)
+           << " is " << str(ratio, 3) << " times the fluid's rho0. The coupling is"
+           << " explicit, and for solids lighter than about 1.1 to 1.6"
+           << " times the fluid (the bound rising with resolution) it was"
+           << " unstable in still water: noise from round-off grew on a"
+           << " plate with fluid on both sides until its force swung by"
+           << " tens of N/m after 0.5 to 1.5 s (docs/fsi.md, \"Light"
+           << " solids\"). Check a still-water run before trusting loads";
+        if (ratio < 1)
+        {
+            warning(os.str(), "constant/solidProperties");
+        }
+        else
+        {
+            log_ << "    Note: " << os.str() << "\n";
+        }
     }
 }
 
