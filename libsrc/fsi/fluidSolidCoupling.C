@@ -26,6 +26,7 @@ fluidSolidCoupling::fluidSolidCoupling(solidBodySet& solids)
     fluidForce.assign(n, vec3{0, 0, 0});
     fluidForceAtStart.assign(n, vec3{0, 0, 0});
     heldForce_.resize(n);
+    previousForce_.assign(n, vec3{0, 0, 0});
     copyPositions();
     // Until a step has moved them, the solids' own velocity.
     for (std::size_t b = 0; b < solids_.bodies().size(); ++b)
@@ -133,6 +134,30 @@ label fluidSolidCoupling::advanceSecondHalf(const double t, const scalar dt)
 }
 
 
+label fluidSolidCoupling::advanceVerletStep(const double t, const scalar dt,
+                                            const bool firstOrder)
+{
+    const scalar early = (1 - verletMeanWindow)*dt;
+    if (device_)
+    {
+        return advanceVerletOnDevice(t, dt, !firstOrder);
+    }
+    if (firstOrder)
+    {
+        heldForce_ = fluidForceAtStart;
+    }
+    else
+    {
+        parallelFor(openmpExec{}, size(), verletForceOp{
+            fluidForceAtStart.data(), previousForce_.data(),
+            heldForce_.data()});
+    }
+    previousForce_ = fluidForceAtStart;
+    const label n = advance(t, early, heldForce_);
+    return n + advance(t + double(early), dt - early, heldForce_);
+}
+
+
 void fluidSolidCoupling::saveStepStart()
 {
     if (device_)
@@ -186,6 +211,14 @@ const vec3* fluidSolidCoupling::deviceMeanVelocity() const { return nullptr; }
 bool fluidSolidCoupling::nonFiniteOnDevice() const { return false; }
 void fluidSolidCoupling::toHost() {}
 label fluidSolidCoupling::advanceOnDevice(double, scalar, bool) { return 0; }
+label fluidSolidCoupling::advanceVerletOnDevice(double, scalar, bool)
+{
+    return 0;
+}
+label fluidSolidCoupling::advanceOnDeviceUnder(double, scalar, const vec3*)
+{
+    return 0;
+}
 void fluidSolidCoupling::keepForceOnDevice() {}
 void fluidSolidCoupling::saveStepStartOnDevice() {}
 #endif

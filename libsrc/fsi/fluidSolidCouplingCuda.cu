@@ -94,6 +94,7 @@ struct deviceSolids
     deviceBuffer<scalar> stretchSum;             // 2 per particle
     // The coupling's arrays.
     deviceBuffer<vec3> fluidForce, fluidForceAtStart, heldForce;
+    deviceBuffer<vec3> previousForce;    // F^{n-1} of the Verlet steps
     deviceBuffer<vec3> meanVelocity;
     deviceBuffer<point> halfStart, startPosition;
     deviceBuffer<vec3> startVelocity, startMeanVelocity;
@@ -136,6 +137,7 @@ void fluidSolidCoupling::useDevice()
     d.fluidForce = uploaded(fluidForce);
     d.fluidForceAtStart = uploaded(fluidForceAtStart);
     d.heldForce = deviceBuffer<vec3>(n);
+    d.previousForce = uploaded(previousForce_);
     d.meanVelocity = uploaded(meanVelocity);
     d.halfStart = deviceBuffer<point>(n);
     d.startPosition = deviceBuffer<point>(n);
@@ -194,8 +196,40 @@ label fluidSolidCoupling::advanceOnDevice(const double t, const scalar dt,
         parallelFor(cudaExec{}, nAll, heldForceOp{d.fluidForce.data(),
             d.fluidForceAtStart.data(), d.heldForce.data()});
     }
-    const vec3* held = secondHalf ? d.heldForce.data()
-                                  : d.fluidForceAtStart.data();
+    return advanceOnDeviceUnder(t, dt, secondHalf ? d.heldForce.data()
+                                                  : d.fluidForceAtStart.data());
+}
+
+
+label fluidSolidCoupling::advanceVerletOnDevice(const double t,
+                                                const scalar dt,
+                                                const bool secondOrder)
+{
+    deviceSolids& d = *device_;
+    if (secondOrder)
+    {
+        parallelFor(cudaExec{}, size(), verletForceOp{
+            d.fluidForceAtStart.data(), d.previousForce.data(),
+            d.heldForce.data()});
+    }
+    else
+    {
+        copyOnDevice(d.heldForce, d.fluidForceAtStart);
+    }
+    copyOnDevice(d.previousForce, d.fluidForceAtStart);
+    const scalar early = (1 - verletMeanWindow)*dt;
+    const label n = advanceOnDeviceUnder(t, early, d.heldForce.data());
+    return n + advanceOnDeviceUnder(t + double(early), dt - early,
+                                    d.heldForce.data());
+}
+
+
+label fluidSolidCoupling::advanceOnDeviceUnder(const double t,
+                                               const scalar dt,
+                                               const vec3* held)
+{
+    deviceSolids& d = *device_;
+    const label nAll = size();
     copyOnDevice(d.halfStart, d.position);
 
     label most = 0;

@@ -406,7 +406,6 @@ void fsiSolver::readStartTime()
     {
         coupling_ = std::make_unique<fluidSolidCoupling>(*solids_);
         coupling_->setClampMotions(motions_.clampMotions(*solids_));
-        noteLightSolids(bodies);
         particles_.link.assign(nTotal, -1);
         for (const solidBody& b : solids_->bodies())
         {
@@ -521,41 +520,6 @@ void fsiSolver::readStartTime()
     if (postProcessTime_.empty())
     {
         checkClampsFollowWalls();
-    }
-}
-
-
-void fsiSolver::noteLightSolids(const std::vector<particleBody>& bodies)
-{
-    // The symplectic scheme's midpoint force was stable down to 0.3 times
-    // the fluid's density; Verlet's force of the step's start was not.
-    if (model_.timeScheme != timeSchemeType::verlet) return;
-    const bool fluid = std::any_of(bodies.begin(), bodies.end(),
-        [](const particleBody& b) { return b.type() == bodyType::fluid; });
-    if (!fluid) return;
-    for (const solidBody& b : solids_->bodies())
-    {
-        const scalar ratio = b.solid->material().rho/model_.rho0;
-        if (ratio >= 2) continue;
-        std::ostringstream os;
-        os << "Solid " << b.name << ": rho " << str(b.solid->material().rho)
-           << " is " << str(ratio, 3) << " times the fluid's rho0. With"
-           << " timeScheme verlet the solid takes the whole step under the"
-           << " fluid force of its start, and solids lighter than about 1.1"
-           << " to 1.6 times the fluid (the bound rising with resolution)"
-           << " were unstable in still water: noise from round-off grew on a"
-           << " plate wetted on both sides until its force swung by tens of"
-           << " N/m after 0.5 to 1.5 s. The symplectic scheme (the default)"
-           << " was stable down to 0.3 times the fluid (docs/fsi.md, \"Light"
-           << " solids with the Verlet scheme\")";
-        if (ratio < 1)
-        {
-            warning(os.str(), "system/sphSchemes");
-        }
-        else
-        {
-            log_ << "    Note: " << os.str() << "\n";
-        }
     }
 }
 

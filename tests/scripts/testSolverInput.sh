@@ -488,33 +488,6 @@ expectIn "pistonWave depth 0.5 in 0.25 m of water: warned with both" "$scratch/c
 expectIn "pistonWave depth 0.5 in 0.25 m of water: names constant/motion" "$scratch/c/log.solver" \
     "constant/motion at line"
 
-# Light solids under Verlet (docs/fsi.md, "Light solids"): the rubber gate,
-# 1.1 times the water, gets a note in the log; made lighter than the water,
-# a warning; with the symplectic scheme neither.
-rm -rf "$scratch/c"
-cp -r "$SPHVCPM_DIR/tutorials/sphVcpmFsi/damBreakElasticGate2D" "$scratch/c"
-(cd "$scratch/c" && ./Allclean > /dev/null 2>&1)
-sed -i 's/^endTime .*/endTime 1e-4;/; /^functions/,$d' "$scratch/c/system/controlDict"
-(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
-expectIn "a gate 1.1 times the water: a note" "$scratch/c/log.solver" \
-    "Note: Solid gate: rho 1100 is 1\.1 times the fluid's rho0\. With timeScheme verlet"
-check "a gate 1.1 times the water: no warning of it" \
-    bash -c "! grep -A1 'SPHVCPM Warning' '$scratch/c/log.solver' | grep -q 'Solid gate'"
-rm -rf "$scratch/c/0.0001"
-sed -i 's/^\( *rho *\)\(\[1 -3 0 0 0 0 0\] \)\?1100;/\1\2900;/' "$scratch/c/constant/solidProperties"
-(cd "$scratch/c" && generateParticles > log.generateParticles 2>&1 && sphVcpmFsi > log.solver 2>&1)
-expectIn "a gate lighter than the water: a warning" "$scratch/c/log.solver" \
-    "Solid gate: rho 900 is 0\.9 times the fluid's rho0"
-check "a gate lighter than the water: said as a warning" \
-    bash -c "grep -A1 'SPHVCPM Warning' '$scratch/c/log.solver' | grep -q 'Solid gate: rho 900'"
-# The symplectic scheme was stable for such solids: nothing said.
-rm -rf "$scratch/c/0.0001"
-sed -i 's/^timeScheme .*/timeScheme symplectic;/' "$scratch/c/system/sphSchemes"
-(cd "$scratch/c" && sphVcpmFsi > log.solver 2>&1)
-check "a gate lighter than the water, symplectic: the run ends" grep -q '^End' "$scratch/c/log.solver"
-check "a gate lighter than the water, symplectic: nothing said of it" \
-    bash -c "! grep -q 'times the fluid.s rho0' '$scratch/c/log.solver'"
-
 # Particles leaving the domain: water thrown up out of the open tank of
 # hydrostaticTank2D past the domain's top is removed and counted, and the
 # run goes on.
