@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <ostream>
 #include <unordered_map>
 
@@ -99,11 +100,14 @@ void prescribedMotions::checkWavemakerDepths
         const scalar depth = m.motion.wavemakerDepth();
         if (!(depth > 0)) continue;
         // The wavemaker's box across g, grown by 3 dp.
-        vec3 lo{1e300, 1e300, 1e300}, hi = -lo;
+        const scalar big = std::numeric_limits<scalar>::max();
+        vec3 lo{big, big, big}, hi = -lo;
+        label nPaddle = 0;
         for (const particleBody& b : bodies)
         {
             if (std::find(m.bodies.begin(), m.bodies.end(), b.name())
                 == m.bodies.end()) continue;
+            nPaddle += b.size();
             for (const point& p : b.position())
             {
                 const vec3 x = toVec3(p);
@@ -114,10 +118,11 @@ void prescribedMotions::checkWavemakerDepths
                 }
             }
         }
+        if (nPaddle == 0) continue;
         // Its box's corners across g (g along an axis, as in a flume: the
         // box itself, flat along g).
         const vec3 loA = lo - dot(lo, up)*up, hiA = hi - dot(hi, up)*up;
-        scalar bottom = 1e300, top = -1e300;
+        scalar bottom = big, top = -big;
         for (const particleBody& b : bodies)
         {
             if (b.type() != bodyType::fluid) continue;
