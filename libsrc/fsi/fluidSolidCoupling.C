@@ -137,7 +137,6 @@ label fluidSolidCoupling::advanceSecondHalf(const double t, const scalar dt)
 label fluidSolidCoupling::advanceVerletStep(const double t, const scalar dt,
                                             const bool firstOrder)
 {
-    const scalar early = (1 - verletMeanWindow)*dt;
     if (device_)
     {
         return advanceVerletOnDevice(t, dt, !firstOrder);
@@ -153,6 +152,7 @@ label fluidSolidCoupling::advanceVerletStep(const double t, const scalar dt,
             heldForce_.data()});
     }
     previousForce_ = fluidForceAtStart;
+    const scalar early = (1 - verletMeanWindow)*dt;
     const label n = advance(t, early, heldForce_);
     return n + advance(t + double(early), dt - early, heldForce_);
 }

@@ -2,6 +2,7 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 #include "prescribedMotions.H"
+#include "boundBox.H"
 #include "error.H"
 #include "formatting.H"
 #include "solidBodySet.H"
@@ -95,52 +96,40 @@ void prescribedMotions::checkWavemakerDepths
     const scalar gMag = mag(g);
     if (!(gMag > 0)) return;
     const vec3 up = -g/gMag;
+    const auto across = [&](const point& p)
+    {
+        const vec3 x = toVec3(p);
+        return x - dot(x, up)*up;
+    };
     for (const namedMotion& m : set_.motions())
     {
         const scalar depth = m.motion.wavemakerDepth();
         if (!(depth > 0)) continue;
-        // The wavemaker's box across g, grown by 3 dp.
-        const scalar big = std::numeric_limits<scalar>::max();
-        vec3 lo{big, big, big}, hi = -lo;
-        label nPaddle = 0;
+        // The wavemaker's particles projected across g, their box grown
+        // by 3 dp: the water beside it is the fluid whose projection lies
+        // in that box, its whole column along g.
+        boundBox paddle = boundBox::invalid();
         for (const particleBody& b : bodies)
         {
             if (std::find(m.bodies.begin(), m.bodies.end(), b.name())
                 == m.bodies.end()) continue;
-            nPaddle += b.size();
-            for (const point& p : b.position())
-            {
-                const vec3 x = toVec3(p);
-                for (int d = 0; d < 3; ++d)
-                {
-                    lo[d] = std::min(lo[d], x[d]);
-                    hi[d] = std::max(hi[d], x[d]);
-                }
-            }
+            for (const point& p : b.position()) paddle.add(across(p));
         }
-        if (nPaddle == 0) continue;
-        // Its box's corners across g (g along an axis, as in a flume: the
-        // box itself, flat along g).
-        const vec3 loA = lo - dot(lo, up)*up, hiA = hi - dot(hi, up)*up;
+        if (!paddle.valid()) continue;
+        paddle.min -= vec3{3*dp, 3*dp, 3*dp};
+        paddle.max += vec3{3*dp, 3*dp, 3*dp};
+        const scalar big = std::numeric_limits<scalar>::max();
         scalar bottom = big, top = -big;
         for (const particleBody& b : bodies)
         {
             if (b.type() != bodyType::fluid) continue;
             for (const point& p : b.position())
             {
-                const vec3 x = toVec3(p);
-                // Across g only: the water's whole column beside it.
-                const vec3 across = x - dot(x, up)*up;
-                bool near = true;
-                for (int d = 0; d < 3 && near; ++d)
-                {
-                    const scalar a = std::min(loA[d], hiA[d]) - 3*dp;
-                    const scalar c = std::max(loA[d], hiA[d]) + 3*dp;
-                    near = across[d] >= a && across[d] <= c;
-                }
-                if (!near) continue;
-                bottom = std::min(bottom, dot(x, up));
-                top = std::max(top, dot(x, up));
+                const vec3 a = across(p);
+                if (!paddle.encloses(boundBox{a, a}, 3)) continue;
+                const scalar h = dot(toVec3(p), up);
+                bottom = std::min(bottom, h);
+                top = std::max(top, h);
             }
         }
         if (top < bottom) continue;   // no water beside it

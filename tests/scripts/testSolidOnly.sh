@@ -228,13 +228,23 @@ check "restart with a particle not in 0/: exit status 1" [ $? -eq 1 ]
 expectIn "restart with a particle not in 0/: names it" "$scratch/log.badId" \
     "Solid beam: particle id 99999 of time 0.3 is not in 0/beam"
 
+# materialVariant <name> <sed of solidProperties> <endTime>: the cantilever
+# afresh in $scratch/<name> with its material edited, run to endTime (one
+# write there), its log in $scratch/log.<name>.
+materialVariant()
+{
+    local v="$scratch/$1"
+    cp -r "$c" "$v"; rm -rf "$v"/0.* "$v/postProcessing"
+    sed -i "$2" "$v/constant/solidProperties"
+    sed -i "s/^endTime .*/endTime $3;/; s/^writeInterval .*/writeInterval $3;/" \
+        "$v/system/controlDict"
+    sphVcpmFsi -case "$v" > "$scratch/log.$1" 2>&1
+}
+
 # A variable of solidProperties ($E0) is neither an unknown keyword nor an
 # entry that names no solid.
 v="$scratch/variable"
-cp -r "$c" "$v"; rm -rf "$v"/0.* "$v/postProcessing"
-sed -i 's/^beam { rho 1000; E 1e8;/E0 1e8;\nbeam { rho 1000; E $E0;/' "$v/constant/solidProperties"
-sed -i 's/^endTime .*/endTime 0.01;/; s/^writeInterval .*/writeInterval 0.01;/' "$v/system/controlDict"
-sphVcpmFsi -case "$v" > "$scratch/log.variable" 2>&1
+materialVariant variable 's/^beam { rho 1000; E 1e8;/E0 1e8;\nbeam { rho 1000; E $E0;/' 0.01
 check "a variable in solidProperties: the run ends" grep -q '^End' "$scratch/log.variable"
 check "a variable in solidProperties: no warning" bash -c "! grep -q Warning '$scratch/log.variable'"
 expectIn "a variable in solidProperties: E read through it" "$scratch/log.variable" "E = 1e\+08 Pa"
@@ -407,24 +417,16 @@ PY
 # E given as if in MPa (1e8 Pa meant, 100 written): its own weight would
 # strain the beam by rho g L/E = 1000 9.81 0.06/100 = 5.9, a warning
 # before the run naming the numbers.
-w="$scratch/ownWeight"
-cp -r "$c" "$w"; rm -rf "$w"/0.* "$w/postProcessing"
-sed -i 's/E 1e8;/E 100;/' "$w/constant/solidProperties"
-sed -i 's/^endTime .*/endTime 1e-4;/; s/^writeInterval .*/writeInterval 1e-4;/' "$w/system/controlDict"
-sphVcpmFsi -case "$w" > "$scratch/log.ownWeight" 2>&1
+materialVariant ownWeight 's/E 1e8;/E 100;/' 1e-4
 expectIn "E far too low for its own weight: warned with the numbers" "$scratch/log.ownWeight" \
     "Solid beam: its own weight strains it by about rho \|g\| L/E = 5\.89 \(rho = 1e\+03 kg/m\^3, L = 0\.06 m along g, E = 100 Pa\)"
 check "E = 1e8: no such warning" bash -c "! grep -q 'its own weight strains' '$scratch/log.run'"
 # solidProperties' rho changed after generateParticles: the solver takes it,
 # sets the mass from it (1200 x 0.01^2 = 0.12) and says so; none when equal.
-m="$scratch/materialRho"
-cp -r "$c" "$m"; rm -rf "$m"/0.* "$m/postProcessing"
-sed -i 's/^beam { rho 1000;/beam { rho 1200;/' "$m/constant/solidProperties"
-sed -i 's/^endTime .*/endTime 1e-4;/; s/^writeInterval .*/writeInterval 1e-4;/' "$m/system/controlDict"
-sphVcpmFsi -case "$m" > "$scratch/log.materialRho" 2>&1
+materialVariant materialRho 's/^beam { rho 1000;/beam { rho 1200;/' 1e-4
 expectIn "solidProperties rho changed after generation: warned" "$scratch/log.materialRho" \
     "Solid beam: its particles' mass gives rho = 1000 kg/m\^3 \(as generated\), constant/solidProperties rho = 1200: the solver uses 1200"
-fieldValues "$m/0.0001/beam/mass" > "$scratch/materialRho.mass"
+fieldValues "$scratch/materialRho/0.0001/beam/mass" > "$scratch/materialRho.mass"
 check "solidProperties rho changed after generation: every mass 0.12 at 1e-4" \
     awk '{ n++; if ($1 < 0.1199999 || $1 > 0.1200001) bad++ } END { exit !(n == 372 && !bad) }' \
         "$scratch/materialRho.mass"
