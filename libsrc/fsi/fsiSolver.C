@@ -410,7 +410,8 @@ void fsiSolver::readStartTime()
         for (const solidBody& b : solids_->bodies())
         {
             solidViews_.push_back({b.name, &b.solid->reference(),
-                                   &b.solid->position});
+                &b.solid->position,
+                coupling_->index(solidViews_.size(), 0)});
         }
         // A restart: the mean velocity the fluid saw when it was written.
         std::size_t solid = 0;

@@ -223,6 +223,57 @@ struct vecSum
     }
 };
 
+// The inverse of a 3x3 matrix by its cofactors; false (inverse left 0)
+// when it is singular against the size of its entries.
+bool invert3(const double a[3][3], double inverse[3][3])
+{
+    const double c00 = a[1][1]*a[2][2] - a[1][2]*a[2][1];
+    const double c01 = a[1][2]*a[2][0] - a[1][0]*a[2][2];
+    const double c02 = a[1][0]*a[2][1] - a[1][1]*a[2][0];
+    const double det = a[0][0]*c00 + a[0][1]*c01 + a[0][2]*c02;
+    double scale = 0;
+    for (int i = 0; i < 3; ++i) scale = std::max(scale, std::fabs(a[i][i]));
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int j = 0; j < 3; ++j) inverse[i][j] = 0;
+    }
+    if (!(std::fabs(det) > 1e-9*scale*scale*scale)) return false;
+    inverse[0][0] = c00/det;
+    inverse[1][0] = c01/det;
+    inverse[2][0] = c02/det;
+    inverse[0][1] = (a[0][2]*a[2][1] - a[0][1]*a[2][2])/det;
+    inverse[1][1] = (a[0][0]*a[2][2] - a[0][2]*a[2][0])/det;
+    inverse[2][1] = (a[0][1]*a[2][0] - a[0][0]*a[2][1])/det;
+    inverse[0][2] = (a[0][1]*a[1][2] - a[0][2]*a[1][1])/det;
+    inverse[1][2] = (a[0][2]*a[1][0] - a[0][0]*a[1][2])/det;
+    inverse[2][2] = (a[0][0]*a[1][1] - a[0][1]*a[1][0])/det;
+    return true;
+}
+
+// m += a b^T.
+void addOuter(double m[3][3], const point& a, const point& b)
+{
+    const double u[3] = {double(a.x), double(a.y), double(a.z)};
+    const double v[3] = {double(b.x), double(b.y), double(b.z)};
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int j = 0; j < 3; ++j) m[i][j] += u[i]*v[j];
+    }
+}
+
+// The solid of that name among the snapshot's; FatalError naming the
+// function object when the run has none.
+const solidView& solidNamed(const solverSnapshot& s, const std::string& name,
+                            const std::string& objectName)
+{
+    for (std::size_t i = 0; s.solids && i < s.solids->size(); ++i)
+    {
+        if ((*s.solids)[i].name == name) return (*s.solids)[i];
+    }
+    fatalError("Function object '" + objectName + "': solid '" + name
+        + "' is not in the run");
+}
+
 } // End anonymous namespace
 
 
@@ -378,7 +429,38 @@ probes::probes(std::string name, const dictionary& dict,
     frame_(dict, this->name(), caseDir, model.nDimensions, bodies)
 {
     dict.checkKeywords(keywords({"fields", "probeLocations", "wetFraction",
-                                 "frame"}));
+                                 "frame", "onSolid"}));
+    if (dict.found("onSolid"))
+    {
+        solid_ = dict.get<std::string>("onSolid");
+        if (dict.found("frame"))
+        {
+            dict.fatalAt("onSolid", "Function object '" + this->name()
+                + "': onSolid carries the points with the solid, its"
+                " clamp's motion included; leave frame out");
+        }
+        std::vector<std::string> solids, names;
+        const bodyInfo* body = nullptr;
+        for (const bodyInfo& b : bodies)
+        {
+            names.push_back(b.name);
+            if (b.type == bodyType::solid) solids.push_back(b.name);
+            if (b.name == solid_) body = &b;
+        }
+        if (!body || body->type != bodyType::solid)
+        {
+            const std::string guess = dictionaryDetail::closest(solid_,
+                                                                solids);
+            dict.fatalAt("onSolid", "Function object '" + this->name()
+                + "': " + (body ? "'" + solid_ + "' is a "
+                    + bodyTypeName(body->type) + " body, not a solid (a"
+                    " wall's moving points take frame " + solid_ + ")"
+                  : "there is no body '" + solid_ + "'"
+                    + (guess.empty() ? "" : " (did you mean " + guess
+                       + "?)")) + ". Solid bodies: " + str(solids));
+        }
+        solidDp_ = body->dp;
+    }
     if (dict.found("wetFraction"))
     {
         wetFraction_ = dict.get<scalar>("wetFraction");
@@ -427,16 +509,118 @@ std::vector<scalar> probes::values(const solverSnapshot& s) const
 }
 
 
+std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
+{
+    std::vector<vec3> here;
+    if (solid_.empty())
+    {
+        const rigidTransform T = frame_.at(s.time);
+        for (const vec3& x : locations_)
+        {
+            here.push_back(toVec3(T.apply(toPoint(x))));
+        }
+        return here;
+    }
+    const solidView& view = solidNamed(s, solid_, name());
+    const std::vector<point>& X = *view.reference;
+    const std::vector<point>& x = *view.position;
+    if (X.empty())
+    {
+        fatalError("Function object '" + name() + "': solid '" + solid_
+            + "' has no particles");
+    }
+    const bool planar = s.model.nDimensions == 2;
+    if (attached_.empty())
+    {
+        // Each point rides on its nearest particle, offset as in the
+        // reference configuration and turned and stretched by the local
+        // map F of the particles within 1.5 dp (a lattice's nearest and
+        // diagonal ones): least squares of x_j - x_p = F (X_j - X_p).
+        for (const vec3& P : locations_)
+        {
+            attachment a{0, {}, {}, 0};
+            for (label i = 1; i < label(X.size()); ++i)
+            {
+                if (magSqr(X[i] - P) < magSqr(X[a.particle] - P))
+                {
+                    a.particle = i;
+                }
+            }
+            const point Xp = X[a.particle];
+            const scalar d = mag(toVec3(Xp) - P);
+            if (d > 2*solidDp_)
+            {
+                warning("Function object '" + name() + "': the point "
+                    + str(P, 10) + " is " + str(d) + " m from solid '"
+                    + solid_ + "' (its nearest particle, at "
+                    + str(toVec3(Xp), 10) + ", carries it): check the"
+                    " points");
+            }
+            double A[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+            const scalar r2 = 2.25*solidDp_*solidDp_;
+            for (label j = 0; j < label(X.size()); ++j)
+            {
+                if (j == a.particle || magSqr(X[j] - Xp) > r2) continue;
+                a.neighbours.push_back(j);
+                addOuter(A, X[j] - Xp, X[j] - Xp);
+            }
+            // In the plane z maps to itself: an entry of A's size there.
+            if (planar) A[2][2] = 0.5*(A[0][0] + A[1][1]);
+            a.zz = A[2][2];
+            if (!invert3(A, a.inverseA))
+            {
+                warning("Function object '" + name() + "': the particles of"
+                    " solid '" + solid_ + "' round the point " + str(P, 10)
+                    + " do not span the " + (planar ? "plane" : "space")
+                    + ": it moves with its particle's displacement alone,"
+                    " not turning with the solid");
+            }
+            attached_.push_back(std::move(a));
+        }
+    }
+    for (std::size_t k = 0; k < locations_.size(); ++k)
+    {
+        const attachment& a = attached_[k];
+        const point xp = x[a.particle];
+        const point Xp = X[a.particle];
+        const point offset = toPoint(locations_[k]) - Xp;
+        bool translate = true;
+        for (int i = 0; i < 3; ++i) translate &= a.inverseA[i][i] == 0;
+        if (translate)
+        {
+            here.push_back(toVec3(xp + offset));
+            continue;
+        }
+        double B[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, planar ? a.zz : 0}};
+        for (const label j : a.neighbours)
+        {
+            addOuter(B, x[j] - xp, X[j] - Xp);
+        }
+        // x = x_p + B A^-1 (P - X_p)
+        const double o[3] = {double(offset.x), double(offset.y),
+                             double(offset.z)};
+        double Ao[3] = {0, 0, 0}, moved[3] = {0, 0, 0};
+        for (int i = 0; i < 3; ++i)
+        {
+            for (int j = 0; j < 3; ++j) Ao[i] += a.inverseA[i][j]*o[j];
+        }
+        for (int i = 0; i < 3; ++i)
+        {
+            for (int j = 0; j < 3; ++j) moved[i] += B[i][j]*Ao[j];
+        }
+        here.push_back(toVec3(xp) + vec3{scalar(moved[0]), scalar(moved[1]),
+                                         scalar(planar ? 0 : moved[2])});
+    }
+    return here;
+}
+
+
 std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
 {
-    const rigidTransform T = frame_.at(s.time);
-    std::vector<vec3> here;
-    for (const vec3& x : locations_)
-    {
-        here.push_back(toVec3(T.apply(toPoint(x))));
-    }
+    const std::vector<vec3> here = pointsAt(s);
     warnOutsideDomain(name(), "probe", here, s.cells.grid, 2*s.model.h,
-        warned_, frame_.moving() ? s.time : std::nan(""));
+        warned_, frame_.moving() || !solid_.empty() ? s.time
+                                                    : std::nan(""));
     // Shepard means over the fluid within a support: sum f W V / sum W V.
     const std::size_t n = locations_.size();
     std::vector<scalar> p(n, 0), rho(n, 0);
@@ -515,6 +699,12 @@ void probes::writeHeader(std::ostream& os) const
 void probes::writeFileHeader(std::ostream& os, const std::size_t file) const
 {
     os << frame_.headerLine();
+    if (!solid_.empty())
+    {
+        os << "# The points ride on solid " << solid_ << ", each on its"
+              " particle nearest it at the reference position given here,"
+              " turned and stretched with the particles round that one\n";
+    }
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
         os << "# Probe " << k << ' ' << str(locations_[k], 10) << '\n';
@@ -641,9 +831,10 @@ forces::forces(std::string name, const dictionary& dict,
 :
     table(std::move(name), dict, caseDir, startTimeName, "force.dat"),
     body_(-1),
-    frame_(dict, this->name(), caseDir, nDimensions, bodies)
+    frame_(dict, this->name(), caseDir, nDimensions, bodies),
+    dp_(0)
 {
-    dict.checkKeywords(keywords({"body", "CofR", "frame"}));
+    dict.checkKeywords(keywords({"body", "CofR", "frame", "shapes"}));
     if (dict.found("frame") && !dict.found("CofR"))
     {
         dict.fatalAt("frame", "Function object '" + this->name() + "': frame"
@@ -692,6 +883,31 @@ forces::forces(std::string name, const dictionary& dict,
         dict.fatalAt("body", "Function object '" + this->name() + "': "
             + what + ". Wall and solid bodies: " + list);
     }
+    dp_ = bodies[body_].dp;
+    if (dict.found("shapes"))
+    {
+        // Part of the body: its particles inside these shapes as it stands
+        // in the reference configuration, so that the same particles are
+        // summed however the body moves or bends (the upper half of a gate,
+        // one wall of a rolling tank).
+        if (!dict.isDict("shapes"))
+        {
+            dict.fatalAt("shapes", "Function object '" + this->name()
+                + "': shapes is a dictionary of shapes, as a body's shapes"
+                " in generateParticlesDict: shapes { top { shape box; min"
+                " (...); max (...); } }");
+        }
+        part_.emplace(nDimensions);
+        part_->addShapes(dict.subDict("shapes"), dp_, caseDir);
+        const motionSet motions = caseMotions(caseDir, nDimensions);
+        if (bodies[body_].type == bodyType::wall)
+        {
+            if (const namedMotion* m = motions.namedMotionOf(body))
+            {
+                bodyMotion_ = m->motion;
+            }
+        }
+    }
 }
 
 
@@ -715,6 +931,7 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
     struct forceMoment { sumVec F, M; };
     forceMoment sum{{0, 0, 0}, {0, 0, 0}};
     const vec3 CofR = toVec3(frame_.at(s.time).apply(toPoint(CofR_)));
+    const std::vector<char> inPart = partMask(s);
 
     withKernel(m, [&](auto kernel)
     {
@@ -727,6 +944,7 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
         {
             vec3 f{0, 0, 0};
             if (pf.kind[w] == fluidKind || pf.body[w] != body) return f;
+            if (part_ && !inPart[w]) return f;
             const point xw = pf.position[w];
             const vec3 vw = pf.velocity[w];
             const scalar mw = pf.mass[w];
@@ -781,6 +999,44 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
 }
 
 
+std::vector<char> forces::partMask(const solverSnapshot& s) const
+{
+    if (!part_) return {};
+    const particleFields& pf = s.particles;
+    const std::uint8_t body = std::uint8_t(body_);
+    const bodyInfo& info = s.bodies.at(body_);
+    // A solid's reference lattice; a wall where it stands in 0/.
+    const solidView* solid = info.type == bodyType::solid
+        ? &solidNamed(s, info.name, name()) : nullptr;
+    const rigidTransform T = bodyMotion_ ? bodyMotion_->transform(s.time)
+                                         : rigidTransform::identity();
+    const scalar tol = 1e-6*dp_;
+    std::vector<char> in(pf.size(), 0);
+    label nIn = 0, nBody = 0;
+    boundBox where = boundBox::invalid();
+    for (label w = 0; w < pf.size(); ++w)
+    {
+        if (pf.kind[w] == fluidKind || pf.body[w] != body) continue;
+        const point X = solid
+            ? (*solid->reference)[pf.link[w] - solid->first]
+            : bodyMotion_ ? T.reference(pf.position[w]) : pf.position[w];
+        in[w] = part_->inside(toVec3(X), tol);
+        nIn += in[w];
+        ++nBody;
+        where.add(toVec3(X));
+    }
+    if (!partChecked_ && nBody > 0 && nIn == 0)
+    {
+        warning("Function object '" + name() + "': its shapes hold none of"
+            " the particles of body " + info.name + ", which lie within "
+            + str(where.min, 6) + " - " + str(where.max, 6) + " in the"
+            " reference configuration (as in 0/): its force reads 0");
+    }
+    partChecked_ = true;
+    return in;
+}
+
+
 void forces::writeHeader(std::ostream& os) const
 {
     writeFileHeader(os, 0);
@@ -789,6 +1045,11 @@ void forces::writeHeader(std::ostream& os) const
 
 void forces::writeFileHeader(std::ostream& os, const std::size_t file) const
 {
+    if (part_)
+    {
+        os << "# On the particles of the body inside shapes, as it stands in"
+              " the reference configuration (0/)\n";
+    }
     if (file == 0)
     {
         os << "# Time Fx Fy Fz\n";
@@ -947,21 +1208,9 @@ solidPoints::solidPoints(std::string name, const dictionary& dict,
 
 std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
 {
-    const solidView* view = nullptr;
-    if (s.solids)
-    {
-        for (const solidView& v : *s.solids)
-        {
-            if (v.name == body_) view = &v;
-        }
-    }
-    if (!view)
-    {
-        fatalError("Function object '" + name() + "': solid '" + body_
-            + "' is not in the run");
-    }
-    const std::vector<point>& X = *view->reference;
-    const std::vector<point>& x = *view->position;
+    const solidView& view = solidNamed(s, body_, name());
+    const std::vector<point>& X = *view.reference;
+    const std::vector<point>& x = *view.position;
     if (X.empty())
     {
         fatalError("Function object '" + name() + "': solid '" + body_

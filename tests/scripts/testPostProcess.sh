@@ -2,8 +2,9 @@
 # sphVcpmFsi -postProcess (docs/postProcessing.md): the function objects
 # evaluated on written times must give what the run sampled at those
 # times. On the short rolling tank (a moving tank, a plate clamped to it,
-# oil; the tank's force with its moment about the pivot) every type
-# samples at the write times in the run; the tables are
+# oil; the tank's force with its moment about the pivot, the forces on
+# the tank's floor and the plate's top, probes riding on the plate) every
+# type samples at the write times in the run; the tables are
 # moved aside and -postProcess writes them again from the time
 # directories: identical on the CPU (binary writes), within round-off
 # where the run was on the GPU. Likewise solidPoints in a run of solids
@@ -63,9 +64,14 @@ s = s[:s.index("functions\n{")] + """functions
     probe { type probes; probeLocations ((0.03 0.01 0) (0.3 0.05 0)); %s }
     energy { type energy; %s }
     front { type surgeFront; direction (1 0 0); %s }
+    tankFloor { type forces; body tank; CofR (0.3045 0 0);
+                shapes { floor { shape box; min (-1 -1 0); max (1 0 0); } } %s }
+    plateTop { type forces; body plate;
+               shapes { top { shape box; min (0.3 0.06 0); max (0.31 1 0); } } %s }
+    onPlate { type probes; onSolid plate; probeLocations ((0.3025 0.1 0) (0.3065 0.05 0)); %s }
     spare { type probes; probeLocations ((0.1 0.02 0)); enabled false; }
 }
-""" % ((at,)*7)
+""" % ((at,)*10)
 open(p, 'w').write(s)
 PY
 generateParticles -case "$c" > "$scratch/log.gen" 2>&1
@@ -115,7 +121,7 @@ mistake()
     expectIn "$what: the error" "$scratch/log.mistake" "$pattern"
 }
 mistake "-func of no entry" \
-    "Function object 'tipp' is not in functions \{\}; its entries are \(tip levels tankForce plateForce probe energy front spare\) \(did you mean 'tip'\?\)" \
+    "Function object 'tipp' is not in functions \{\}; its entries are \(tip levels tankForce plateForce probe energy front tankFloor plateTop onPlate spare\) \(did you mean 'tip'\?\)" \
     -postProcess -func tipp
 printf 'functions { }\n' > "$c/system/emptyDict"
 mistake "-dict with no entries" "has no enabled entry to evaluate" -postProcess -dict system/emptyDict
