@@ -12,7 +12,9 @@
 #include "formatting.H"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
+#include <utility>
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
@@ -70,6 +72,39 @@ std::string dictionaryDetail::closest(const std::string& key,
         return "";
     }
     return best;
+}
+
+
+std::string dictionaryDetail::synonymOf(const std::string& key,
+    const std::vector<std::string>& candidates)
+{
+    // Lower case, without '_' and '-': youngs_modulus, Young-Modulus.
+    std::string k;
+    for (const char c : key)
+    {
+        if (c != '_' && c != '-') k += char(std::tolower((unsigned char)c));
+    }
+    static const std::vector<std::pair<std::string, std::vector<std::string>>>
+    names
+    {
+        {"E", {"emod", "emodulus", "young", "youngs", "youngmodulus",
+               "youngsmodulus", "elasticmodulus", "elasticitymodulus",
+               "modulus", "ym"}},
+        {"nu", {"poisson", "poissons", "poissonratio", "poissonsratio",
+                "poissoncoefficient", "pr"}},
+        {"rho", {"density", "dens", "massdensity"}},
+        {"rho0", {"density", "rhop0", "referencedensity"}},
+    };
+    for (const auto& [keyword, others] : names)
+    {
+        if (std::find(candidates.begin(), candidates.end(), keyword)
+                != candidates.end()
+         && std::find(others.begin(), others.end(), k) != others.end())
+        {
+            return keyword;
+        }
+    }
+    return "";
 }
 
 
@@ -755,10 +790,13 @@ void dictionary::checkKeywords(const std::vector<std::string>& valid) const
             unread[e.file()].push_back(e.keyword());
             continue;
         }
+        const std::string suggestion = guess.empty()
+            ? dictionaryDetail::synonymOf(e.keyword(), valid) : guess;
         fatalIOError(e.file(), e.line(), "Unknown keyword '"
             + dictionaryDetail::clip(e.keyword()) + "' in dictionary \""
             + name_ + "\"."
-            + (guess.empty() ? "" : " Did you mean '" + guess + "'?")
+            + (suggestion.empty() ? "" : " Did you mean '" + suggestion
+               + "'?")
             + " Valid keywords are: " + str(valid),
             e.keyword());
     }

@@ -520,8 +520,9 @@ void particleGenerator::checkSolid
             os << what << ": its thinnest member is "
                << members.thinnestLayers << " layers thick (at "
                << shapeDetail::str(p, nDimensions_) << "), so its bending"
-               << " stiffness is expected " << 100*error << " % off"
-               << " (docs/vcpm.md); " << minLayers << " layers give at most "
+               << " stiffness is expected " << 100*error << " % off ("
+               << (error < 0 ? "too soft" : "too stiff") << ", docs/vcpm.md"
+               << "); " << minLayers << " layers give at most "
                << 100*thinMemberTolerance << " % at nu = "
                << spec.material->nu << " (surface correction "
                << (spec.material->surfaceCorrection ? "on" : "off")

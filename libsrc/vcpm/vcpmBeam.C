@@ -104,8 +104,25 @@ scalar deficit(const deficitFit (&fit)[N], const scalar nu, const scalar n)
 // within 1-2 % stiff at many in plane strain near 0.5, where the clamped
 // section's restraint of the Poisson contraction stiffens the continuum
 // itself), and the model returns it as soft.
-struct envelopePoint { scalar nu, a; };
-const envelopePoint planeStrainEnvelope[] =
+struct nuPoint { scalar nu, value; };
+
+// The value at nu, linear between the points, held beyond them.
+template<std::size_t N>
+scalar interpolateInNu(const nuPoint (&table)[N], const scalar nu)
+{
+    if (nu <= table[0].nu) return table[0].value;
+    for (std::size_t i = 1; i < N; ++i)
+    {
+        if (nu <= table[i].nu)
+        {
+            const scalar w = (nu - table[i-1].nu)/(table[i].nu - table[i-1].nu);
+            return (1 - w)*table[i-1].value + w*table[i].value;
+        }
+    }
+    return table[N-1].value;
+}
+
+const nuPoint planeStrainEnvelope[] =
 {
     {0.40, 0.1}, {0.45, 0.5}, {0.46, 0.85}, {0.47, 1.6}, {0.48, 2.2},
     {0.49, 8.1}
@@ -113,19 +130,28 @@ const envelopePoint planeStrainEnvelope[] =
 
 scalar envelopeA(const scalar nu, const planeModel plane)
 {
-    const auto& e = planeStrainEnvelope;
-    const std::size_t N = sizeof(e)/sizeof(e[0]);
-    if (plane == planeModel::planeStress || nu <= e[0].nu) return e[0].a;
-    for (std::size_t i = 1; i < N; ++i)
-    {
-        if (nu <= e[i].nu)
-        {
-            const scalar w = (nu - e[i-1].nu)/(e[i].nu - e[i-1].nu);
-            return (1 - w)*e[i-1].a + w*e[i].a;
-        }
-    }
-    return e[N-1].a;
+    return plane == planeModel::planeStress
+        ? planeStrainEnvelope[0].value
+        : interpolateInNu(planeStrainEnvelope, nu);
 }
+
+// Two layers with the surface correction: no face shift (each face would
+// shift the other's bonds back), but the face weights, which near
+// incompressibility in plane strain stiffen the strip past the continuum.
+// EI_lattice/EI measured (benchmarks/vcpmThinMembers -layers 2 -surface
+// on, set A, 2026-12-02), linear in nu between.
+const nuPoint twoLayersPlaneStrain[] =
+{
+    {0.0, 0.6243}, {0.1, 0.5899}, {0.2, 0.5659}, {0.25, 0.5617},
+    {0.3, 0.5678}, {0.35, 0.5948}, {0.4, 0.6738}, {0.42, 0.7418},
+    {0.44, 0.8618}, {0.45, 0.9610}, {0.46, 1.1123}, {0.47, 1.3682},
+    {0.48, 1.8863}, {0.49, 3.4632}
+};
+const nuPoint twoLayersPlaneStress[] =
+{
+    {0.0, 0.6243}, {0.1, 0.5927}, {0.2, 0.5721}, {0.3, 0.5624},
+    {0.4, 0.5646}, {0.45, 0.5712}, {0.49, 0.5797}
+};
 
 } // End namespace
 
@@ -135,12 +161,16 @@ scalar thinMemberStiffnessError(const scalar nLayers, const scalar nu,
                                 const bool surfaceCorrection)
 {
     if (nLayers < 2) return -1;     // no second-neighbour bonds: no bending
-    // Under 3 layers every particle is on a face and the correction changes
-    // little (n = 2: EI ratio 0.51-0.60 with it, as without): the plain fit.
     if (surfaceCorrection && nLayers >= 3)
     {
         const scalar a = envelopeA(nu, plane)/(nLayers*nLayers*nLayers);
         return -a/(1 + a);
+    }
+    if (surfaceCorrection)
+    {
+        return (plane == planeModel::planeStress
+            ? interpolateInNu(twoLayersPlaneStress, nu)
+            : interpolateInNu(twoLayersPlaneStrain, nu)) - 1;
     }
     const scalar c = plane == planeModel::planeStress
         ? deficit(planeStressFit, nu, nLayers)

@@ -805,6 +805,33 @@ TEST(dictionaryLookup, checkKeywordsNamesLineAndSuggestion)
 }
 
 
+TEST(dictionaryLookup, checkKeywordsSuggestsWhatOtherCodesCallIt)
+{
+    // Young's modulus, Poisson's ratio and density as other codes and
+    // papers name them: the keyword meant, though no misspelling.
+    const std::string file = "case/constant/solidProperties";
+    const std::vector<std::string> solid = {"rho", "E", "nu", "plane"};
+    for (const auto& [given, meant] :
+         std::vector<std::pair<std::string, std::string>>{
+             {"Emod", "E"}, {"youngs_modulus", "E"}, {"YoungModulus", "E"},
+             {"PoissonRatio", "nu"}, {"poisson", "nu"}, {"density", "rho"}})
+    {
+        const auto d = dictionary::fromString("rho 1100;\n" + given
+                                              + " 2e6;\n", file);
+        const auto err = catchFatal([&]{ d.checkKeywords(solid); });
+        expectError(err, file, 2, {"Unknown keyword '" + given + "'",
+                                   "Did you mean '" + meant + "'?"});
+    }
+    // Only a keyword that is valid there: density in fluidProperties.
+    const auto fluid = dictionary::fromString("density 1000;\n", file);
+    expectError(catchFatal([&]{ fluid.checkKeywords({"rho0", "nu"}); }),
+                file, 1, {"Did you mean 'rho0'?"});
+    const auto none = catchFatal([&]{ fluid.checkKeywords({"nu", "c0"}); });
+    EXPECT_EQ(none.message().find("Did you mean"), std::string::npos)
+        << none.message();
+}
+
+
 TEST(dictionaryLookup, checkKeywordsAcceptsVariables)
 {
     // Variables as OpenFOAM users write them, some from an included file:
