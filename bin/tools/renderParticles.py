@@ -21,9 +21,14 @@ import sys
 import paraview.simple as pv
 
 
+# The exit status of an error this script explains (the wrapper adds
+# nothing to it).
+explainedError = 3
+
+
 def fail(message):
     print("renderParticles: error: " + message, file=sys.stderr)
-    sys.exit(1)
+    sys.exit(explainedError)
 
 
 def parseArgs():
@@ -431,6 +436,21 @@ def main():
         print("renderParticles: no -times: the latest time, %g" % allTimes[-1])
     frames = framesOf(allTimes, args.animate) if args.animate > 0 else []
     rendered = sorted(set(snapshots) | set(frames))
+    if args.surface:
+        # ParaView holds a series at its nearest time: a surface written
+        # for other times would be drawn over these particles unsaid.
+        with open(surfaceSeries) as f:
+            surfaceTimes = [float(e["time"]) for e in json.load(f)["files"]]
+        missing = [t for t in rendered if not any(
+            abs(t - s) <= 1e-9*max(1.0, abs(t)) for s in surfaceTimes)]
+        if missing:
+            fail("-surface: VTK/freeSurface.vtp.series has no surface at t = "
+                 "%s of the %d times to draw (it has %d, %s to %s): run "
+                 "particlesToVTK -freeSurface for them (without -time: all)"
+                 % (" ".join(fmt % t for t in missing[:6])
+                    + (" ..." if len(missing) > 6 else ""), len(rendered),
+                    len(surfaceTimes), fmt % min(surfaceTimes),
+                    fmt % max(surfaceTimes)))
 
     for b in bodies:
         if b.dp is None:
@@ -453,6 +473,12 @@ def main():
     fluids = [b for b in bodies if b.type == "fluid" and "U" in b.arrays]
     solids = [b for b in bodies
               if b.type == "solid" and "vonMises" in b.arrays]
+    for b in bodies:
+        field = {"fluid": "U", "solid": "vonMises"}.get(b.type)
+        if field and field not in b.arrays:
+            print("renderParticles: %s has no %s in its VTK files (written "
+                  "with particlesToVTK -fields?): drawn in one colour"
+                  % (b.name, field))
     for t in sorted(set(rendered) | {allTimes[0]}):
         for b in bodies:
             b.reader.UpdatePipeline(t)

@@ -496,15 +496,66 @@ freeSurface extract(const fluidSamples& s, const Kernel& kernel,
     }
     if (!(nNodes <= double(settings.maxNodes)))
     {
+        // The particles farthest from the fluid's median point: a particle
+        // flung far away is what makes the bounds huge.
+        point median{0, 0, 0};
+        std::vector<double> axis(s.x.size());
+        for (int d = 0; d < 3; ++d)
+        {
+            for (std::size_t i = 0; i < s.x.size(); ++i) axis[i] = s.x[i][d];
+            std::nth_element(axis.begin(), axis.begin() + axis.size()/2,
+                             axis.end());
+            median[d] = axis[axis.size()/2];
+        }
+        // Far: beyond four times the distance within which 90 % lie (the
+        // farthest one at least).
+        std::vector<double> distance(s.x.size());
+        for (std::size_t i = 0; i < s.x.size(); ++i)
+        {
+            distance[i] = mag(toVec3(s.x[i] - median));
+        }
+        std::vector<double> sorted = distance;
+        std::nth_element(sorted.begin(), sorted.begin() + sorted.size()*9/10,
+                         sorted.end());
+        const double bulk = sorted[sorted.size()*9/10];
+        std::vector<std::size_t> farOnes;
+        for (std::size_t i = 0; i < s.x.size(); ++i)
+        {
+            if (distance[i] > 4*bulk) farOnes.push_back(i);
+        }
+        if (farOnes.empty())
+        {
+            farOnes.push_back(std::size_t(std::max_element(distance.begin(),
+                distance.end()) - distance.begin()));
+        }
+        std::sort(farOnes.begin(), farOnes.end(),
+                  [&](std::size_t a, std::size_t b)
+                  {
+                      return distance[a] > distance[b];
+                  });
+        std::string far;
+        for (std::size_t k = 0; k < std::min<std::size_t>(3, farOnes.size());
+             ++k)
+        {
+            far += (k ? ", " : "") + str(toVec3(s.x[farOnes[k]]));
+        }
+        if (farOnes.size() > 3)
+        {
+            far += " and " + std::to_string(farOnes.size() - 3) + " more";
+        }
+        // A coarser grid helps only when it is then small enough.
+        const double coarser = nNodes/std::pow(double(refine), s.nDimensions);
         fatalError("The free surface's grid would have "
             + std::to_string(std::int64_t(std::min(nNodes, 9e18)))
             + " nodes (spacing " + std::to_string(spacing) + " m over the"
               " fluid's bounds " + str(toVec3(lo)) + " to "
             + str(toVec3(hi)) + "), more than "
-            + std::to_string(settings.maxNodes) + ".\n"
-            + (refine > 1 ? "Use a coarser grid"
-               " (-surfaceRefine 1), or look" : "Look")
-            + " for fluid particles far from the rest.");
+            + std::to_string(settings.maxNodes) + ".\nThe fluid particles"
+              " farthest from its median point " + str(toVec3(median))
+            + " are at " + far + " (90 % lie within " + str(bulk) + " m of"
+              " it): look for particles far from the rest"
+            + (refine > 1 && coarser <= double(settings.maxNodes)
+               ? ", or use a coarser grid (-surfaceRefine 1)." : "."));
     }
     result.nNodes = n[0]*n[1]*n[2];
 

@@ -78,6 +78,33 @@ check "a body named freeSurface: exit 1" [ $? -eq 1 ]
 expectIn "a body named freeSurface: named" "$out" \
     "has a body named 'freeSurface'"
 
+# Without system/sphSchemes the surface has no kernel: said before any time
+# is converted.
+cp -r "$run" "$scratch/noSchemes"
+rm -rf "$scratch/noSchemes/VTK" "$scratch/noSchemes/system/sphSchemes"
+particlesToVTK -case "$scratch/noSchemes" -freeSurface > "$scratch/log.noSchemes" 2>&1
+check "no system/sphSchemes: exit 1" [ $? -eq 1 ]
+expectIn "no system/sphSchemes: named" "$scratch/log.noSchemes" \
+    "-freeSurface takes the solver's kernel and h from the case's system/sphSchemes and constant/fluidProperties, and there is no .*noSchemes/system/sphSchemes"
+check "no system/sphSchemes: nothing converted" [ ! -e "$scratch/noSchemes/VTK" ]
+
+# A time that fails to convert (its positions cut short) leaves the series
+# of the times before it, for ParaView to open.
+broken="$scratch/broken"
+cp -r "$run" "$broken"
+rm -rf "$broken/VTK"
+cp -r "$broken/0" "$broken/0.1"
+mkdir -p "$broken/0.1/uniform"
+printf 'FoamFile { format ascii; class dictionary; object time; }\nbeginTime 0;\nvalue 0.1;\nname "0.1";\nindex 7;\ndeltaT 1e-4;\ndeltaT0 1e-4;\nc0 44;\n' \
+    > "$broken/0.1/uniform/time"
+head -c 200 "$broken/0/water/position" > "$broken/0.1/water/position"
+particlesToVTK -case "$broken" -freeSurface > "$scratch/log.broken" 2>&1
+check "a broken time: exit 1" [ $? -eq 1 ]
+expectIn "a broken time: time 0 in the water's series" "$broken/VTK/water.vtp.series" \
+    '"name" : "water/water_0\.vtp", "time" : 0 '
+expectIn "a broken time: and in the surface's" "$broken/VTK/freeSurface.vtp.series" \
+    '"name" : "freeSurface/freeSurface_0\.vtp", "time" : 0 '
+
 # ParaView.
 if ! command -v pvpython > /dev/null; then
     echo "pvpython not found: ParaView checks skipped"

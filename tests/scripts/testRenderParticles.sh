@@ -129,6 +129,32 @@ check "2D: animation frames 0 and 1, no more" [ -s "$gate/images/animation/frame
     -a -s "$gate/images/animation/frame_0001.png" \
     -a ! -e "$gate/images/animation/frame_0002.png" ]
 
+# -surface where the surface was written for other times only: an error
+# naming them (ParaView would draw the nearest time's surface unsaid), said
+# once; then with a surface at every time drawn, a picture.
+(cd "$gate" && particlesToVTK -freeSurface -latestTime > log.surfaceLatest 2>&1)
+(cd "$gate" && "$render" -times 0.002 -surface -size 480x320) \
+    > "$scratch/log.surfaceMissing" 2>&1
+check "-surface, none at 0.002: exit 1" [ $? -eq 1 ]
+expectIn "-surface, none at 0.002: names the time and what to run" \
+    "$scratch/log.surfaceMissing" \
+    "-surface: VTK/freeSurface.vtp.series has no surface at t = 0.002 of the 1 times to draw \(it has 1, 0.004 to 0.004\): run particlesToVTK -freeSurface"
+check "-surface, none at 0.002: the error said once (no 'pvbatch failed')" \
+    bash -c "! grep -q 'pvbatch failed' '$scratch/log.surfaceMissing'"
+(cd "$gate" && "$render" -times 0.004 -surface -size 480x320 -output surfaced) \
+    > "$scratch/log.surfaceThere" 2>&1
+check "-surface at 0.004, where it was written: exit 0" [ $? -eq 0 ]
+checkPng "2D surface" "$gate/surfaced/gate2D_t0.004.png" 480 320
+
+# A body converted without the field it is coloured by: said, one colour.
+(cd "$gate" && particlesToVTK -fields '(p)' > log.pOnly 2>&1 \
+    && "$render" -times 0.004 -size 480x320 -output pOnly) > "$scratch/log.pOnly" 2>&1
+check "fields (p) only: exit 0" [ $? -eq 0 ]
+expectIn "fields (p) only: the water drawn in one colour, said" "$scratch/log.pOnly" \
+    "gate2D has no U in its VTK files|water has no U in its VTK files"
+expectIn "fields (p) only: the gate too" "$scratch/log.pOnly" \
+    "gate has no vonMises in its VTK files \(written with particlesToVTK -fields\?\): drawn in one colour"
+
 # 3D without time directories: fields and nearest neighbours tell.
 helper="${SPHVCPM_TESTBIN:-$SPHVCPM_DIR/platforms/tests}/writeParticleCase"
 if [ -x "$helper" ]; then

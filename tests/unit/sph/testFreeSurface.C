@@ -304,20 +304,29 @@ TEST(freeSurface, noFluidAndBadSettings)
                       {"level", "is not in (0, 1)"});
     }
     // A particle flung far away would make a huge grid: an error naming
-    // the way out, not gigabytes.
+    // it, not gigabytes; no coarser grid would do (1e12 nodes).
     particleBody far = water;
     far.append({1e6, 1e6, 0});
     far.scalarField("mass").back() = 0.1;
     far.scalarField("rho").back() = rho0;
-    expectMessage(catchFatal([&] { surfaceOf({&far}); }),
-                  {"grid would have", "-surfaceRefine 1",
-                   "fluid particles far from the rest"});
-    // Already the coarsest grid: only the far particles are named.
-    freeSurfaceSettings coarse;
-    coarse.refine = 1;
-    const FatalError err = catchFatal([&] { surfaceOf({&far}, coarse); });
-    expectMessage(err, {"Look for fluid particles far from the rest"});
+    const FatalError err = catchFatal([&] { surfaceOf({&far}); });
+    expectMessage(err, {"grid would have", "farthest from its median point",
+                        "are at (1000000 1000000 0) (90 % lie within",
+                        "look for particles far from the rest."});
     EXPECT_EQ(err.message().find("-surfaceRefine"), std::string::npos);
+    // One 1 m away, over a grid of at most 20,000 nodes: at dp/2 it would
+    // have about 45,000, at dp about 11,000, so the coarser grid is named.
+    particleBody near = water;
+    near.append({1, 1, 0});
+    near.scalarField("mass").back() = 0.1;
+    near.scalarField("rho").back() = rho0;
+    freeSurfaceSettings small;
+    small.maxNodes = 20000;
+    expectMessage(catchFatal([&] { surfaceOf({&near}, small); }),
+                  {"are at (1 1 0) (90 % lie within", "or use a coarser grid"
+                   " (-surfaceRefine 1)."});
+    small.refine = 1;
+    EXPECT_GT(surfaceOf({&near}, small).mesh.nCells(), 0u);
     // No volume: named.
     particleBody empty = water;
     empty.scalarField("rho")[3] = 0;

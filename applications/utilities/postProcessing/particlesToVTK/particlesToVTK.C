@@ -14,6 +14,7 @@
 #include "timeSelection.H"
 #include "vtkCaseConverter.H"
 
+#include <filesystem>
 #include <iostream>
 
 using namespace sphvcpm;
@@ -78,59 +79,84 @@ int main(int argc, char* argv[])
         }
         settings.refine = int(refine);
         checkFreeSurfaceSettings(settings);
+        // What the surface needs, before any time is converted.
+        for (const char* file : {"system/sphSchemes",
+                                 "constant/fluidProperties"})
+        {
+            if (surface && !std::filesystem::is_regular_file(
+                    args.casePath()/file))
+            {
+                fatalError("-freeSurface takes the solver's kernel and h"
+                    " from the case's system/sphSchemes and"
+                    " constant/fluidProperties, and there is no "
+                    + (args.casePath()/file).string());
+            }
+        }
         bool modelRead = false;
         sphModel model;
 
-        for (const timeInstant& t : times)
+        // A time that fails leaves the series of the times converted
+        // before it, so that ParaView opens them.
+        try
         {
-            std::cout << "Time = " << t.name << "\n";
-            std::vector<particleBody> bodies;
-            for (const auto& out : converter.convert(t, &bodies))
+            for (const timeInstant& t : times)
             {
-                std::cout << "    " << out.body << ": " << out.nParticles
-                          << " particles -> " << out.file.generic_string()
-                          << "\n";
-            }
-            if (surface)
-            {
-                std::vector<const particleBody*> fluids;
-                for (const particleBody& b : bodies)
+                std::cout << "Time = " << t.name << "\n";
+                std::vector<particleBody> bodies;
+                for (const auto& out : converter.convert(t, &bodies))
                 {
-                    if (b.type() == bodyType::fluid)
+                    std::cout << "    " << out.body << ": " << out.nParticles
+                              << " particles -> " << out.file.generic_string()
+                              << "\n";
+                }
+                if (surface)
+                {
+                    std::vector<const particleBody*> fluids;
+                    for (const particleBody& b : bodies)
                     {
-                        fluids.push_back(&b);
+                        if (b.type() == bodyType::fluid)
+                        {
+                            fluids.push_back(&b);
+                        }
+                    }
+                    if (!fluids.empty() && !modelRead)
+                    {
+                        // The solver's kernel and h (system/sphSchemes).
+                        model = readSphModel(args.casePath(),
+                            fluids.front()->nDimensions(),
+                            fluids.front()->dp());
+                        modelRead = true;
+                    }
+                    const freeSurface fs = fluids.empty() ? freeSurface()
+                        : fluidFreeSurface(fluids, model.kernel, model.h,
+                                           settings);
+                    const auto file = converter.writeMesh("freeSurface", t,
+                                                          fs.mesh);
+                    const bool planar = fs.mesh.nodesPerCell == 2;
+                    std::cout << "    freeSurface: " << fs.mesh.nCells()
+                        << (planar ? " segments" : " triangles") << " -> "
+                        << file.generic_string() << "\n";
+                    if (fluids.empty() || !(fs.particleVolume > 0))
+                    {
+                        std::cout << "        no fluid particles\n";
+                    }
+                    else
+                    {
+                        std::cout << "        encloses " << str(fs.enclosed)
+                            << (planar ? " m^2" : " m^3")
+                            << " (the particles' "
+                            << str(fs.particleVolume) << ", "
+                            << str(100*(fs.enclosed/fs.particleVolume - 1), 3)
+                            << " %)\n";
                     }
                 }
-                if (!fluids.empty() && !modelRead)
-                {
-                    // The solver's kernel and h (system/sphSchemes).
-                    model = readSphModel(args.casePath(),
-                        fluids.front()->nDimensions(), fluids.front()->dp());
-                    modelRead = true;
-                }
-                const freeSurface fs = fluids.empty() ? freeSurface()
-                    : fluidFreeSurface(fluids, model.kernel, model.h,
-                                       settings);
-                const auto file = converter.writeMesh("freeSurface", t,
-                                                      fs.mesh);
-                const bool planar = fs.mesh.nodesPerCell == 2;
-                std::cout << "    freeSurface: " << fs.mesh.nCells()
-                    << (planar ? " segments" : " triangles") << " -> "
-                    << file.generic_string() << "\n";
-                if (fluids.empty() || !(fs.particleVolume > 0))
-                {
-                    std::cout << "        no fluid particles\n";
-                }
-                else
-                {
-                    std::cout << "        encloses " << str(fs.enclosed)
-                        << (planar ? " m^2" : " m^3") << " (the particles' "
-                        << str(fs.particleVolume) << ", "
-                        << str(100*(fs.enclosed/fs.particleVolume - 1), 3)
-                        << " %)\n";
-                }
+                std::cout << std::endl;
             }
-            std::cout << std::endl;
+        }
+        catch (...)
+        {
+            converter.writeSeries();
+            throw;
         }
         converter.writeSeries();
 
