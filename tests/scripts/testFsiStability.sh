@@ -213,4 +213,16 @@ check "lightPlate: at rest in still water (Fx std over 0.75-1.25 s below 1 N/m)"
          END { if (!n) exit 1; sd = sqrt(q/n - (s/n)^2)
                print "    Fx std " sd " N/m over " n " rows"; exit !(sd < 1) }' \
         "$c/postProcessing/f/0/force.dat"
+check "lightPlate at 0.55: no light-solid warning" \
+    bash -c "! grep -q 'times the fluid.s density' '$c/log.sphVcpmFsi'"
+# Lighter than the coupling was found stable: warned of at the start.
+for scheme in verlet symplectic; do
+    sed -i "s/^timeScheme .*/timeScheme $scheme;/" "$c/system/sphSchemes"
+    sed -i 's/rho 550;/rho 200;/; s/rho 550 /rho 200 /' "$c/constant/solidProperties"
+    sed -i 's/endTime 1.25;/endTime 0.001;/' "$c/system/controlDict"
+    rm -rf "$c"/[1-9]* "$c/postProcessing"
+    (cd "$c" && sphVcpmFsi > log.light 2>&1)
+    expectIn "a plate 0.2 times the water ($scheme): warned" "$c/log.light" \
+        "Solid plate is 0.2 times the fluid's density \(200 against 1000 kg/m\^3\). Under timeScheme $scheme a plate lighter than 0.[23]5* times the fluid's density drifted into a growing oscillation"
+done
 finish
