@@ -25,15 +25,31 @@ vtkCaseConverter::vtkCaseConverter(std::filesystem::path caseDir)
         auto [it, fresh] = byIndex.emplace(state.index, t.name);
         if (!fresh)
         {
-            fatalError("Times " + it->second + " and " + t.name
-                + " of case " + caseDir_.string() + " have the same time"
-                " index " + std::to_string(state.index)
-                + " (from <time>/uniform/time, 0 without one), so their VTK"
-                  " files would have the same name.\nRemove or rename one"
-                  " of the two time directories.");
+            sharedIndex_[t.name] = it->second;
+            sharedIndex_.emplace(it->second, t.name);
+            warning("Times " + it->second + " and " + t.name + " of case "
+                + caseDir_.string() + " have the same time index "
+                + std::to_string(state.index) + " (from <time>/uniform/time,"
+                  " 0 without one): neither can be converted, and the VTK"
+                  " series leave both out. Remove or rename one of the two"
+                  " time directories.");
         }
         states_[t.name] = state;
     }
+}
+
+
+void vtkCaseConverter::checkOwnIndex(const std::string& time) const
+{
+    const auto other = sharedIndex_.find(time);
+    if (other == sharedIndex_.end()) return;
+    const auto [a, b] = std::minmax(time, other->second);
+    fatalError("Times " + a + " and " + b + " of case " + caseDir_.string()
+        + " have the same time index "
+        + std::to_string(states_.at(time).index) + " (from"
+          " <time>/uniform/time, 0 without one), so their VTK files would"
+          " have the same name.\nRemove or rename one of the two time"
+          " directories (other times convert: choose them with -time).");
 }
 
 
@@ -126,6 +142,7 @@ std::vector<vtkCaseConverter::bodyOutput> vtkCaseConverter::convert(
             + caseDir_.string());
     }
 
+    checkOwnIndex(time.name);
     std::vector<bodyOutput> outputs;
     std::vector<particleBody> read = readTimeDirectory(caseDir_, time.name);
     for (const particleBody& body : read)
@@ -159,6 +176,7 @@ std::filesystem::path vtkCaseConverter::writeMesh(const std::string& name,
               " the " + name + " would be the same.\nRename the body in"
               " system/generateParticlesDict.");
     }
+    checkOwnIndex(time.name);
     const std::filesystem::path file =
         vtpName(name, states_.at(time.name).index);
     std::filesystem::create_directories(vtkDir()/name);
@@ -185,6 +203,8 @@ void vtkCaseConverter::writeSeries() const
         std::vector<vtpSeriesEntry> entries;
         for (const auto& t : times_)
         {
+            // A shared index: which time its file is cannot be told.
+            if (sharedIndex_.count(t.name)) continue;
             const timeState& state = states_.at(t.name);
             const std::filesystem::path name = vtpName(body, state.index);
             if (std::filesystem::exists(vtkDir()/name))

@@ -669,16 +669,37 @@ TEST(vtkCaseConverter, restrictedFields)
 }
 
 
-TEST(vtkCaseConverter, sameIndexTwiceIsFatal)
+TEST(vtkCaseConverter, sameIndexTwiceIsFatalForThoseTimes)
 {
+    // A copied time directory (0.2 with 0.1's index 3): converting either
+    // is an error naming both; the other times convert, and the series
+    // leave the two out (their files cannot be told apart).
     scratchDir dir;
     writeCaseTime(dir.path(), "0.1", 3, 2);
     writeCaseTime(dir.path(), "0.2", 3, 2);
-    const FatalError err = catchFatal([&]()
+    writeCaseTime(dir.path(), "0.3", 5, 2);
+    testing::internal::CaptureStderr();
+    vtkCaseConverter conv(dir.path());
+    const std::string warned = testing::internal::GetCapturedStderr();
+    EXPECT_NE(warned.find("Times 0.1 and 0.2"), std::string::npos) << warned;
+    EXPECT_NE(warned.find("neither can be converted"), std::string::npos);
+    for (const char* shared : {"0.1", "0.2"})
     {
-        vtkCaseConverter conv(dir.path());
-    });
-    expectMessage(err, {"Times 0.1 and 0.2", "same time index 3"});
+        const FatalError err = catchFatal([&]()
+        {
+            conv.convert(conv.times()[std::string(shared) == "0.1" ? 0 : 1]);
+        });
+        expectMessage(err, {"Times 0.1 and 0.2", "same time index 3",
+                            "choose them with -time"});
+    }
+    ASSERT_EQ(conv.times()[2].name, "0.3");
+    EXPECT_FALSE(conv.convert(conv.times()[2]).empty());
+    conv.writeSeries();
+    std::ifstream series(dir.path()/"VTK"/"water.vtp.series");
+    const std::string text((std::istreambuf_iterator<char>(series)),
+                           std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("water_5.vtp"), std::string::npos) << text;
+    EXPECT_EQ(text.find("water_3.vtp"), std::string::npos) << text;
 }
 
 
