@@ -703,10 +703,22 @@ const entry& dictionary::lookupEntry(const std::string& key) const
     }
     const std::vector<std::string> present = keys();
     const std::string guess = dictionaryDetail::closest(key, present);
+    // Emod given for E: what other codes call it.
+    std::string other;
+    for (const std::string& k : present)
+    {
+        if (guess.empty() && other.empty()
+         && dictionaryDetail::synonymOf(k, {key}) == key)
+        {
+            other = k;
+        }
+    }
     fatalIOError(file_, line_, "Keyword '" + dictionaryDetail::clip(key)
         + "' is undefined in dictionary \"" + name_ + "\"."
-        + (guess.empty() ? ""
-         : " Did you mean '" + dictionaryDetail::clip(guess) + "'?")
+        + (!guess.empty()
+         ? " Did you mean '" + dictionaryDetail::clip(guess) + "'?"
+         : !other.empty() ? " '" + dictionaryDetail::clip(other) + "' is"
+           " not read here: write it as '" + key + "'." : "")
         + " Keywords present: " + str(dictionaryDetail::clip(present)),
         key);
 }

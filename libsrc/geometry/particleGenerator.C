@@ -535,7 +535,7 @@ void particleGenerator::checkSolid
             {
                 os << " (the solid's own dp may be the top-level dp "
                    << dp_ << " divided by 1 to 4: 'dp " << dp_/r << ";'"
-                   << " in its entry gives about "
+                   << " in its entry gives at least "
                    << std::lround(members.thinnestLayers*spec.dp*r/dp_)
                    << " layers)";
             }

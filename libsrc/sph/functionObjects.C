@@ -418,6 +418,19 @@ std::string pointFrame::headerLine() const
 const std::vector<std::string> probes::fieldNames{"p", "U", "rho"};
 
 
+const dictionary& probes::withoutFrameOnSolid(const dictionary& dict,
+                                              const std::string& name)
+{
+    if (dict.found("onSolid") && dict.found("frame"))
+    {
+        dict.fatalAt("onSolid", "Function object '" + name + "': onSolid"
+            " carries the points with the solid, its clamp's motion"
+            " included; leave frame out");
+    }
+    return dict;
+}
+
+
 probes::probes(std::string name, const dictionary& dict,
                const std::filesystem::path& caseDir,
                const std::string& startTimeName, const sphModel& model,
@@ -426,19 +439,14 @@ probes::probes(std::string name, const dictionary& dict,
     table(std::move(name), dict, caseDir, startTimeName, "p.dat"),
     fields_{"p"},
     nDimensions_(model.nDimensions),
-    frame_(dict, this->name(), caseDir, model.nDimensions, bodies)
+    frame_(withoutFrameOnSolid(dict, this->name()), this->name(), caseDir,
+           model.nDimensions, bodies)
 {
     dict.checkKeywords(keywords({"fields", "probeLocations", "wetFraction",
                                  "frame", "onSolid"}));
     if (dict.found("onSolid"))
     {
         solid_ = dict.get<std::string>("onSolid");
-        if (dict.found("frame"))
-        {
-            dict.fatalAt("onSolid", "Function object '" + this->name()
-                + "': onSolid carries the points with the solid, its"
-                " clamp's motion included; leave frame out");
-        }
         std::vector<std::string> solids, names;
         const bodyInfo* body = nullptr;
         for (const bodyInfo& b : bodies)
@@ -453,8 +461,10 @@ probes::probes(std::string name, const dictionary& dict,
                                                                 solids);
             dict.fatalAt("onSolid", "Function object '" + this->name()
                 + "': " + (body ? "'" + solid_ + "' is a "
-                    + bodyTypeName(body->type) + " body, not a solid (a"
-                    " wall's moving points take frame " + solid_ + ")"
+                    + bodyTypeName(body->type) + " body, not a solid"
+                    + (body->type == bodyType::wall ? " (points that move"
+                       " with a wall that constant/motion moves take frame "
+                       + solid_ + ")" : std::string())
                   : "there is no body '" + solid_ + "'"
                     + (guess.empty() ? "" : " (did you mean " + guess
                        + "?)")) + ". Solid bodies: " + str(solids));
@@ -538,7 +548,7 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         // diagonal ones): least squares of x_j - x_p = F (X_j - X_p).
         for (const vec3& P : locations_)
         {
-            attachment a{0, {}, {}, 0};
+            attachment a{0, {}, {}, 0, {0, 0, 0}, {}};
             for (label i = 1; i < label(X.size()); ++i)
             {
                 if (magSqr(X[i] - P) < magSqr(X[a.particle] - P))
@@ -547,6 +557,7 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
                 }
             }
             const point Xp = X[a.particle];
+            a.reference = toVec3(Xp);
             const scalar d = mag(toVec3(Xp) - P);
             if (d > 2*solidDp_)
             {
@@ -560,6 +571,7 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
             const scalar r2 = 2.25*solidDp_*solidDp_;
             for (label j = 0; j < label(X.size()); ++j)
             {
+                if (magSqr(X[j] - P) <= r2) a.around.push_back(j);
                 if (j == a.particle || magSqr(X[j] - Xp) > r2) continue;
                 a.neighbours.push_back(j);
                 addOuter(A, X[j] - Xp, X[j] - Xp);
@@ -578,6 +590,7 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
             attached_.push_back(std::move(a));
         }
     }
+    faces_.assign(locations_.size(), {vec3{0, 0, 0}, vec3{0, 0, 0}});
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
         const attachment& a = attached_[k];
@@ -611,6 +624,21 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         here.push_back(toVec3(xp) + vec3{scalar(moved[0]), scalar(moved[1]),
                                          scalar(planar ? 0 : moved[2])});
     }
+    // The side of the solid each point is on: out from the mean of the
+    // particles round it (below a face, whichever particle is nearest).
+    for (std::size_t k = 0; k < locations_.size(); ++k)
+    {
+        const attachment& a = attached_[k];
+        if (a.around.empty()) continue;
+        vec3 mean{0, 0, 0};
+        for (const label j : a.around) mean += toVec3(x[j]);
+        mean = mean/scalar(a.around.size());
+        const vec3 out = here[k] - mean;
+        if (mag(out) > 0.1*solidDp_)
+        {
+            faces_[k] = {toVec3(x[a.particle]), out/mag(out)};
+        }
+    }
     return here;
 }
 
@@ -633,8 +661,16 @@ std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
             const point x = toPoint(here[k]);
             scalar sumW = 0, sumP = 0, sumRho = 0;
             vec3 sumU{0, 0, 0};
+            // On a solid, the fluid on the point's side of it only: a thin
+            // plate's far side is within the support of its near face.
+            const vec3 base = solid_.empty() ? vec3{0, 0, 0} : faces_[k].first;
+            const vec3 normal = solid_.empty() ? vec3{0, 0, 0}
+                                               : faces_[k].second;
+            const bool oneSide = magSqr(normal) > 0;
             forEachFluidNear(s, kernel, x, [&](const label j, const scalar r)
             {
+                if (oneSide
+                 && dot(toVec3(pf.position[j]) - base, normal) < 0) return;
                 const scalar WV = kernel.W(r)*pf.mass[j]/pf.rho[j];
                 sumW += WV;
                 sumP += pf.p[j]*WV;
@@ -707,7 +743,12 @@ void probes::writeFileHeader(std::ostream& os, const std::size_t file) const
     }
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
-        os << "# Probe " << k << ' ' << str(locations_[k], 10) << '\n';
+        os << "# Probe " << k << ' ' << str(locations_[k], 10);
+        if (k < attached_.size())
+        {
+            os << " on the particle at " << str(attached_[k].reference, 10);
+        }
+        os << '\n';
     }
     const std::string& field = fields_.at(file);
     os << "# Time";
@@ -884,6 +925,7 @@ forces::forces(std::string name, const dictionary& dict,
             + what + ". Wall and solid bodies: " + list);
     }
     dp_ = bodies[body_].dp;
+    bodyName_ = body;
     if (dict.found("shapes"))
     {
         // Part of the body: its particles inside these shapes as it stands
@@ -1033,6 +1075,8 @@ std::vector<char> forces::partMask(const solverSnapshot& s) const
             " reference configuration (as in 0/): its force reads 0");
     }
     partChecked_ = true;
+    nInPart_ = nIn;
+    nInBody_ = nBody;
     return in;
 }
 
@@ -1047,8 +1091,9 @@ void forces::writeFileHeader(std::ostream& os, const std::size_t file) const
 {
     if (part_)
     {
-        os << "# On the particles of the body inside shapes, as it stands in"
-              " the reference configuration (0/)\n";
+        os << "# On the " << nInPart_ << " of the " << nInBody_
+           << " particles of body " << bodyName_ << " inside shapes, as it"
+              " stands in the reference configuration (0/)\n";
     }
     if (file == 0)
     {

@@ -822,6 +822,11 @@ TEST(dictionaryLookup, checkKeywordsSuggestsWhatOtherCodesCallIt)
         expectError(err, file, 2, {"Unknown keyword '" + given + "'",
                                    "Did you mean '" + meant + "'?"});
     }
+    // And where the keyword is asked for and missing: Emod given for E.
+    const auto asked = dictionary::fromString("rho 1100;\nEmod 2e6;\n", file);
+    test::expectMessage(catchFatal([&]{ asked.get<double>("E"); }),
+                  {"Keyword 'E' is undefined", "'Emod' is not read here:"
+                   " write it as 'E'."});
     // Only a keyword that is valid there: density in fluidProperties.
     const auto fluid = dictionary::fromString("density 1000;\n", file);
     expectError(catchFatal([&]{ fluid.checkKeywords({"rho0", "nu"}); }),

@@ -965,7 +965,7 @@ TEST(particleGenerator, thinSolidWarns)
     // 4), the coarsest fine enough: 0.01 m/2 for 0.0067 m.
     EXPECT_NE(err.find("refine dp to at most 0.00667 m (the solid's own dp"
                        " may be the top-level dp 0.01 divided by 1 to 4:"
-                       " 'dp 0.005;' in its entry gives about 4 layers)"),
+                       " 'dp 0.005;' in its entry gives at least 4 layers)"),
               std::string::npos) << err;
 
     // 3 layers: no warning.

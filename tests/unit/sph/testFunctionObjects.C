@@ -664,6 +664,53 @@ TEST(functionObjects, probesRideOnASolid)
 }
 
 
+TEST(functionObjects, probesOnASolidReadTheirSide)
+{
+    // A plate two particles thick standing in the water, thinner than the
+    // kernel's support, with 5 kPa more on its left: a sensor on either
+    // face reads the fluid on its own side only (the side out from the
+    // particles round it), where a fixed probe at the same point averages
+    // both.
+    scratchDir tmp;
+    tankScene tank;
+    const scalar extra = 5000;
+    for (label i = 0; i < tank.fields.size(); ++i)
+    {
+        if (tank.fields.kind[i] == fluidKind && tank.fields.position[i].x < 0.2)
+        {
+            tank.fields.p[i] += extra;
+        }
+    }
+    std::vector<point> X;
+    for (int j = 0; j < 10; ++j)
+    {
+        for (const double x : {0.195, 0.205})
+        {
+            X.push_back({x, 0.055 + j*dp, 0});
+        }
+    }
+    const std::vector<solidView> solids{{"gate", &X, &X, 0}};
+    solverSnapshot snap = tank.snapshot();
+    snap.solids = &solids;
+    const auto readAt = [&](const std::string& entry)
+    {
+        auto fos = tank.read(entry, tmp.path());
+        const auto* t =
+            dynamic_cast<const functionObjects::table*>(fos.at(0).get());
+        return t->values(snap);
+    };
+    const auto faces = readAt("p { type probes; onSolid gate;"
+                              " probeLocations ((0.21 0.1 0) (0.19 0.1 0)); }");
+    const auto fixed = readAt("p { type probes;"
+                              " probeLocations ((0.21 0.1 0) (0.19 0.1 0)); }");
+    const scalar p = tankScene::hydrostatic(0.1);
+    EXPECT_NEAR(faces.at(0), p, 0.01*p);
+    EXPECT_NEAR(faces.at(1), p + extra, 0.01*(p + extra));
+    EXPECT_GT(fixed.at(0), p + 0.05*extra);    // the far side's water in it (9 %)
+    EXPECT_LT(fixed.at(1), p + 0.95*extra);
+}
+
+
 TEST(functionObjects, forcesViscousDragPullsTheWall)
 {
     scratchDir tmp;
