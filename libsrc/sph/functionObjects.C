@@ -447,11 +447,10 @@ probes::probes(std::string name, const dictionary& dict,
     if (dict.found("onSolid"))
     {
         solid_ = dict.get<std::string>("onSolid");
-        std::vector<std::string> solids, names;
+        std::vector<std::string> solids;
         const bodyInfo* body = nullptr;
         for (const bodyInfo& b : bodies)
         {
-            names.push_back(b.name);
             if (b.type == bodyType::solid) solids.push_back(b.name);
             if (b.name == solid_) body = &b;
         }
