@@ -274,6 +274,32 @@ const solidView& solidNamed(const solverSnapshot& s, const std::string& name,
         + "' is not in the run");
 }
 
+// solidNamed, for the function objects that follow its particles:
+// FatalError when it has none.
+const solidView& solidToFollow(const solverSnapshot& s,
+                               const std::string& name,
+                               const std::string& objectName)
+{
+    const solidView& view = solidNamed(s, name, objectName);
+    if (view.reference->empty())
+    {
+        fatalError("Function object '" + objectName + "': solid '" + name
+            + "' has no particles");
+    }
+    return view;
+}
+
+// The index of the reference position nearest P (the first of equals).
+label nearestReference(const std::vector<point>& X, const vec3& P)
+{
+    label best = 0;
+    for (label i = 1; i < label(X.size()); ++i)
+    {
+        if (magSqr(X[i] - P) < magSqr(X[best] - P)) best = i;
+    }
+    return best;
+}
+
 } // End anonymous namespace
 
 
@@ -530,14 +556,9 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         }
         return here;
     }
-    const solidView& view = solidNamed(s, solid_, name());
+    const solidView& view = solidToFollow(s, solid_, name());
     const std::vector<point>& X = *view.reference;
     const std::vector<point>& x = *view.position;
-    if (X.empty())
-    {
-        fatalError("Function object '" + name() + "': solid '" + solid_
-            + "' has no particles");
-    }
     const bool planar = s.model.nDimensions == 2;
     if (attached_.empty())
     {
@@ -547,14 +568,7 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         // diagonal ones): least squares of x_j - x_p = F (X_j - X_p).
         for (const vec3& P : locations_)
         {
-            attachment a{0, {}, {}, 0, {0, 0, 0}, {}};
-            for (label i = 1; i < label(X.size()); ++i)
-            {
-                if (magSqr(X[i] - P) < magSqr(X[a.particle] - P))
-                {
-                    a.particle = i;
-                }
-            }
+            attachment a{nearestReference(X, P), {}, {}, 0, {0, 0, 0}, {}};
             const point Xp = X[a.particle];
             a.reference = toVec3(Xp);
             const scalar d = mag(toVec3(Xp) - P);
@@ -1064,7 +1078,7 @@ std::vector<char> forces::partMask(const solverSnapshot& s) const
         in[w] = part_->inside(toVec3(X), tol);
         nIn += in[w];
         ++nBody;
-        where.add(toVec3(X));
+        if (!partChecked_) where.add(toVec3(X));   // for its warning
     }
     if (!partChecked_ && nBody > 0 && nIn == 0)
     {
@@ -1252,23 +1266,14 @@ solidPoints::solidPoints(std::string name, const dictionary& dict,
 
 std::vector<scalar> solidPoints::values(const solverSnapshot& s) const
 {
-    const solidView& view = solidNamed(s, body_, name());
+    const solidView& view = solidToFollow(s, body_, name());
     const std::vector<point>& X = *view.reference;
     const std::vector<point>& x = *view.position;
-    if (X.empty())
-    {
-        fatalError("Function object '" + name() + "': solid '" + body_
-            + "' has no particles");
-    }
     if (particles_.empty())
     {
         for (const vec3& p : points_)
         {
-            label best = 0;
-            for (label i = 1; i < label(X.size()); ++i)
-            {
-                if (magSqr(X[i] - p) < magSqr(X[best] - p)) best = i;
-            }
+            const label best = nearestReference(X, p);
             particles_.push_back(best);
             chosen_.push_back(toVec3(X[best]));
             const scalar d = mag(chosen_.back() - p);
