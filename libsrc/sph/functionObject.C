@@ -262,7 +262,7 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
         else if (type == "energy")
         {
             all.push_back(std::make_unique<energy>
-                (name, dict, caseDir, startTimeName));
+                (name, dict, caseDir, startTimeName, model.nDimensions));
         }
         else if (type == "surgeFront")
         {

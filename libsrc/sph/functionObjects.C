@@ -314,6 +314,12 @@ table::table(std::string name, const dictionary& dict,
 {}
 
 
+void table::writeUnits(std::ostream& os, const std::string& text)
+{
+    os << "# Units: " << text << '\n';
+}
+
+
 void table::sample(const solverSnapshot& s)
 {
     const std::vector<std::vector<scalar>> all = rows(s);
@@ -764,6 +770,8 @@ void probes::writeFileHeader(std::ostream& os, const std::size_t file) const
         os << '\n';
     }
     const std::string& field = fields_.at(file);
+    writeUnits(os, "Time [s], " + field + (field == "p" ? " [Pa]"
+        : field == "U" ? " [m/s]" : " [kg/m^3]"));
     os << "# Time";
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
@@ -867,6 +875,7 @@ void freeSurfaceGauges::writeHeader(std::ostream& os) const
     {
         os << "# Gauge " << k << ' ' << str(locations_[k], 10) << '\n';
     }
+    writeUnits(os, "Time [s], h [m]");
     os << "# Time";
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
@@ -886,7 +895,8 @@ forces::forces(std::string name, const dictionary& dict,
     table(std::move(name), dict, caseDir, startTimeName, "force.dat"),
     body_(-1),
     frame_(dict, this->name(), caseDir, nDimensions, bodies),
-    dp_(0)
+    dp_(0),
+    nDimensions_(nDimensions)
 {
     dict.checkKeywords(keywords({"body", "CofR", "frame", "shapes"}));
     if (dict.found("frame") && !dict.found("CofR"))
@@ -1108,14 +1118,20 @@ void forces::writeFileHeader(std::ostream& os, const std::size_t file) const
            << " particles of body " << bodyName_ << " inside shapes, as it"
               " stands in the reference configuration (0/)\n";
     }
+    const std::string perDepth =
+        nDimensions_ == 2 ? " (2D: per metre of depth)" : "";
     if (file == 0)
     {
+        writeUnits(os, "Time [s], F [" + std::string(nDimensions_ == 2
+            ? "N/m" : "N") + "]" + perDepth);
         os << "# Time Fx Fy Fz\n";
         return;
     }
     os << frame_.headerLine()
-       << "# Moment about CofR " << str(CofR_, 10) << "\n"
-       << "# Time Mx My Mz\n";
+       << "# Moment about CofR " << str(CofR_, 10) << "\n";
+    writeUnits(os, "Time [s], M [" + std::string(nDimensions_ == 2
+        ? "N m/m" : "N m") + "]" + perDepth);
+    os << "# Time Mx My Mz\n";
 }
 
 
@@ -1123,9 +1139,10 @@ void forces::writeFileHeader(std::ostream& os, const std::size_t file) const
 
 energy::energy(std::string name, const dictionary& dict,
                const std::filesystem::path& caseDir,
-               const std::string& startTimeName)
+               const std::string& startTimeName, const int nDimensions)
 :
-    table(std::move(name), dict, caseDir, startTimeName, "energy.dat")
+    table(std::move(name), dict, caseDir, startTimeName, "energy.dat"),
+    nDimensions_(nDimensions)
 {
     dict.checkKeywords(commonKeywords);
 }
@@ -1151,6 +1168,10 @@ std::vector<scalar> energy::values(const solverSnapshot& s) const
 
 void energy::writeHeader(std::ostream& os) const
 {
+    writeUnits(os, nDimensions_ == 2
+        ? "Time [s], mass [kg/m], kinetic and potential [J/m] (2D: per"
+          " metre of depth)"
+        : "Time [s], mass [kg], kinetic and potential [J]");
     os << "# Time mass kinetic potential\n";
 }
 
@@ -1202,6 +1223,7 @@ std::vector<scalar> surgeFront::values(const solverSnapshot& s) const
 
 void surgeFront::writeHeader(std::ostream& os) const
 {
+    writeUnits(os, "Time [s], front [m]");
     os << "# Time front\n";
 }
 
@@ -1323,6 +1345,7 @@ void solidPoints::writeHeader(std::ostream& os) const
         os << "#   point " << k << ": " << str(chosen_[k], 10) << " (asked "
            << str(points_[k], 10) << ")\n";
     }
+    writeUnits(os, "Time [s], u [m]");
     os << "# Time";
     for (std::size_t k = 0; k < chosen_.size(); ++k)
     {

@@ -300,19 +300,22 @@ TEST(functionObjects, probesOfVelocityAndDensity)
     fos[0]->execute(tank.snapshot(0.25));
     const fs::path dir = tmp.path()/"postProcessing"/"flow"/"0";
     const auto U = readLines(dir/"U.dat");
-    ASSERT_EQ(U.size(), 4u);
+    ASSERT_EQ(U.size(), 5u);
     EXPECT_EQ(U[0], "# Probe 0 (0.2 0.1 0)");
-    EXPECT_EQ(U[2], "# Time U0x U0y U1x U1y");
-    const auto u = numbers(U[3]);
+    EXPECT_EQ(U[2], "# Units: Time [s], U [m/s]");
+    EXPECT_EQ(U[3], "# Time U0x U0y U1x U1y");
+    const auto u = numbers(U[4]);
     ASSERT_EQ(u.size(), 5u);
     EXPECT_EQ(u[0], 0.25);
     EXPECT_NEAR(u[1], 0.3, 1e-9);
     const auto rho = readLines(dir/"rho.dat");
-    ASSERT_EQ(rho.size(), 4u);
-    EXPECT_EQ(rho[2], "# Time rho0 rho1");
+    ASSERT_EQ(rho.size(), 5u);
+    EXPECT_EQ(rho[2], "# Units: Time [s], rho [kg/m^3]");
+    EXPECT_EQ(rho[3], "# Time rho0 rho1");
     const auto p = readLines(dir/"p.dat");
-    ASSERT_EQ(p.size(), 4u);
-    EXPECT_EQ(p[2], "# Time p0 p1");
+    ASSERT_EQ(p.size(), 5u);
+    EXPECT_EQ(p[2], "# Units: Time [s], p [Pa]");
+    EXPECT_EQ(p[3], "# Time p0 p1");
 }
 
 
@@ -493,13 +496,18 @@ TEST(functionObjects, forcesMomentAboutCofR)
     fos[0]->execute(tank.snapshot(0.5));
     const fs::path dir = tmp.path()/"postProcessing"/"f"/"0";
     const auto force = readLines(dir/"force.dat");
-    ASSERT_EQ(force.size(), 2u);
-    EXPECT_EQ(force[0], "# Time Fx Fy Fz");
+    // A 2D case's force and moment are per metre of depth.
+    ASSERT_EQ(force.size(), 3u);
+    EXPECT_EQ(force[0],
+              "# Units: Time [s], F [N/m] (2D: per metre of depth)");
+    EXPECT_EQ(force[1], "# Time Fx Fy Fz");
     const auto moment = readLines(dir/"moment.dat");
-    ASSERT_EQ(moment.size(), 3u);
+    ASSERT_EQ(moment.size(), 4u);
     EXPECT_EQ(moment[0], "# Moment about CofR (0 0 0)");
-    EXPECT_EQ(moment[1], "# Time Mx My Mz");
-    const auto m = numbers(moment[2]);
+    EXPECT_EQ(moment[1],
+              "# Units: Time [s], M [N m/m] (2D: per metre of depth)");
+    EXPECT_EQ(moment[2], "# Time Mx My Mz");
+    const auto m = numbers(moment[3]);
     ASSERT_EQ(m.size(), 4u);
     EXPECT_EQ(m[0], 0.5);
     EXPECT_NEAR(m[3], corner[1][2], 1e-9*std::fabs(corner[1][2]));
@@ -777,48 +785,53 @@ TEST(functionObjects, tablesAndWriteControl)
 
     const fs::path pp = tmp.path()/"postProcessing";
     const auto probeLines = readLines(pp/"pressureProbes"/"0.5"/"p.dat");
-    ASSERT_EQ(probeLines.size(), 3u + 6u);
+    ASSERT_EQ(probeLines.size(), 4u + 6u);
     EXPECT_EQ(probeLines[0], "# Probe 0 (0.2 0.1 0)");
     EXPECT_EQ(probeLines[1], "# Probe 1 (0.2 0.25 0)");
-    EXPECT_EQ(probeLines[2], "# Time p0 p1");
+    EXPECT_EQ(probeLines[2], "# Units: Time [s], p [Pa]");
+    EXPECT_EQ(probeLines[3], "# Time p0 p1");
     // First call, then the first step at or past each multiple of 0.001
     // (0.5 + k dt for k = 4, 7, 10, 14, 17).
     const std::vector<label> sampled{0, 4, 7, 10, 14, 17};
     for (std::size_t r = 0; r < sampled.size(); ++r)
     {
-        const auto v = numbers(probeLines[3 + r]);
-        ASSERT_EQ(v.size(), 3u) << probeLines[3 + r];
+        const auto v = numbers(probeLines[4 + r]);
+        ASSERT_EQ(v.size(), 3u) << probeLines[4 + r];
         EXPECT_NEAR(v[0], 0.5 + sampled[r]*dt, 1e-12);
         EXPECT_NEAR(v[1], tankScene::hydrostatic(0.1), 10);
         EXPECT_EQ(v[2], 0);
     }
 
     const auto gaugeLines = readLines(pp/"gauges"/"0.5"/"height.dat");
-    ASSERT_EQ(gaugeLines.size(), 2u + 6u);
+    ASSERT_EQ(gaugeLines.size(), 3u + 6u);
     EXPECT_EQ(gaugeLines[0], "# Gauge 0 (0.2 0 0)");
-    EXPECT_EQ(gaugeLines[1], "# Time h0");
-    EXPECT_NEAR(numbers(gaugeLines[2]).at(1), H, dp/2);
+    EXPECT_EQ(gaugeLines[1], "# Units: Time [s], h [m]");
+    EXPECT_EQ(gaugeLines[2], "# Time h0");
+    EXPECT_NEAR(numbers(gaugeLines[3]).at(1), H, dp/2);
 
     // timeStep 5: the first call (index 0), then 5, 10, 15.
     const auto forceLines = readLines(pp/"wallForce"/"0.5"/"force.dat");
-    ASSERT_EQ(forceLines.size(), 1u + 4u);
-    EXPECT_EQ(forceLines[0], "# Time Fx Fy Fz");
-    EXPECT_NEAR(numbers(forceLines[2]).at(0), 0.5 + 5*dt, 1e-12);
-    EXPECT_NEAR(numbers(forceLines[4]).at(0), 0.5 + 15*dt, 1e-12);
-    EXPECT_EQ(numbers(forceLines[1]).size(), 4u);
+    ASSERT_EQ(forceLines.size(), 2u + 4u);
+    EXPECT_EQ(forceLines[1], "# Time Fx Fy Fz");
+    EXPECT_NEAR(numbers(forceLines[3]).at(0), 0.5 + 5*dt, 1e-12);
+    EXPECT_NEAR(numbers(forceLines[5]).at(0), 0.5 + 15*dt, 1e-12);
+    EXPECT_EQ(numbers(forceLines[2]).size(), 4u);
 
     // Default: every step.
     const auto energyLines =
         readLines(pp/"energyMonitor"/"0.5"/"energy.dat");
-    ASSERT_EQ(energyLines.size(), 1u + 18u);
-    EXPECT_EQ(energyLines[0], "# Time mass kinetic potential");
-    const auto e = numbers(energyLines[1]);
+    ASSERT_EQ(energyLines.size(), 2u + 18u);
+    EXPECT_EQ(energyLines[0], "# Units: Time [s], mass [kg/m], kinetic and"
+              " potential [J/m] (2D: per metre of depth)");
+    EXPECT_EQ(energyLines[1], "# Time mass kinetic potential");
+    const auto e = numbers(energyLines[2]);
     ASSERT_EQ(e.size(), 4u);
     EXPECT_NEAR(e[1], rho0*H*L, 1e-6);
 
     const auto frontLines = readLines(pp/"front"/"0.5"/"front.dat");
-    ASSERT_EQ(frontLines.size(), 1u + 18u);
-    EXPECT_EQ(frontLines[0], "# Time front");
+    ASSERT_EQ(frontLines.size(), 2u + 18u);
+    EXPECT_EQ(frontLines[0], "# Units: Time [s], front [m]");
+    EXPECT_EQ(frontLines[1], "# Time front");
     EXPECT_NEAR(numbers(frontLines.back()).at(1), 39.5*dp, 1e-9);
 
     EXPECT_FALSE(fs::exists(pp/"off"));
@@ -840,10 +853,34 @@ TEST(functionObjects, timeStepControlStartsAtTheFirstCall)
     }
     const auto lines =
         readLines(tmp.path()/"postProcessing"/"e"/"0"/"energy.dat");
-    ASSERT_EQ(lines.size(), 1u + 4u);    // 1, 5, 10, 15
-    EXPECT_NEAR(numbers(lines[1]).at(0), 1e-4, 1e-15);
-    EXPECT_NEAR(numbers(lines[2]).at(0), 5e-4, 1e-15);
-    EXPECT_NEAR(numbers(lines[4]).at(0), 15e-4, 1e-15);
+    ASSERT_EQ(lines.size(), 2u + 4u);    // 1, 5, 10, 15
+    EXPECT_NEAR(numbers(lines[2]).at(0), 1e-4, 1e-15);
+    EXPECT_NEAR(numbers(lines[3]).at(0), 5e-4, 1e-15);
+    EXPECT_NEAR(numbers(lines[5]).at(0), 15e-4, 1e-15);
+}
+
+
+TEST(functionObjects, tablesSayTheirUnits)
+{
+    // 3D: forces, moments, mass and energies whole, not per metre of
+    // depth (the 2D headers are checked with the tables above).
+    scratchDir tmp;
+    tankScene tank;
+    tank.model.nDimensions = 3;
+    auto fos = tank.read("f { type forces; body tank; CofR (0 0 0); }\n"
+                         "e { type energy; }\n", tmp.path());
+    ASSERT_EQ(fos.size(), 2u);
+    for (auto& fo : fos)
+    {
+        fo->execute(tank.snapshot(0));
+    }
+    const fs::path pp = tmp.path()/"postProcessing";
+    EXPECT_EQ(readLines(pp/"f"/"0"/"force.dat").at(0),
+              "# Units: Time [s], F [N]");
+    EXPECT_EQ(readLines(pp/"f"/"0"/"moment.dat").at(1),
+              "# Units: Time [s], M [N m]");
+    EXPECT_EQ(readLines(pp/"e"/"0"/"energy.dat").at(0),
+              "# Units: Time [s], mass [kg], kinetic and potential [J]");
 }
 
 
@@ -867,10 +904,10 @@ TEST(functionObjects, runTimeControlDoesNotSampleTwice)
     }
     const auto lines =
         readLines(tmp.path()/"postProcessing"/"e"/"0"/"energy.dat");
-    ASSERT_EQ(lines.size(), 1u + 11u);
-    for (std::size_t r = 1; r < lines.size(); ++r)
+    ASSERT_EQ(lines.size(), 2u + 11u);
+    for (std::size_t r = 2; r < lines.size(); ++r)
     {
-        EXPECT_NEAR(numbers(lines[r]).at(0), 0.1*(r - 1), 1e-9);
+        EXPECT_NEAR(numbers(lines[r]).at(0), 0.1*(r - 2), 1e-9);
     }
 }
 
