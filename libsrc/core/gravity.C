@@ -33,4 +33,14 @@ vec3 readGravity(const std::filesystem::path& caseDir, const int nDimensions)
     return g;
 }
 
+
+std::string gravityDefaultNote(const std::filesystem::path& caseDir,
+                               const int nDimensions)
+{
+    if (std::filesystem::exists(caseDir/"constant/g")) return "";
+    return nDimensions == 3
+        ? " (no constant/g: the 3D default, up is +z)"
+        : " (no constant/g: the 2D default, up is +y)";
+}
+
 } // End namespace sphvcpm

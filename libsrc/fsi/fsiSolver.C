@@ -6,6 +6,7 @@
 #include "argList.H"
 #include "error.H"
 #include "fluidInteractions.H"
+#include "gravity.H"
 #include "pairRates.H"
 #include "pointLocator.H"
 #include "startState.H"
@@ -213,7 +214,8 @@ fsiSolver::fsiSolver(const fs::path& caseDir, std::ostream& log,
         reportSubCycling();
     }
     log_
-        << "    g = " << str(model_.g) << "\n"
+        << "    g = " << str(model_.g)
+        << gravityDefaultNote(caseDir_, model_.nDimensions) << "\n"
         << "    domain " << str(grid_.origin) << " "
         << grid_.nx << " x " << grid_.ny << " x " << grid_.nz
         << " cells of " << grid_.cellSize << " m\n"

@@ -7,6 +7,7 @@
 #include "dictionary.H"
 #include "dimensionSet.H"
 #include "error.H"
+#include "gravity.H"
 #include "parallel.H"
 #include "sphModel.H"
 #include "startState.H"
@@ -107,7 +108,8 @@ solidOnlySolver::solidOnlySolver
     clampMotion_ = motions_.clampMotions(*solids_);
     solidsDeltaT_ = solids_->stableDeltaT();
     deltaT_ = std::min(solidsDeltaT_, control_.maxDeltaT);
-    log_<< "    g = (" << g.x << " " << g.y << " " << g.z << "), " << nDim_
+    log_<< "    g = (" << g.x << " " << g.y << " " << g.z << ")"
+        << gravityDefaultNote(caseDir_, nDim_) << ", " << nDim_
         << "D, time = " << time_ << ", solid deltaT = " << deltaT_
         << " s\n" << std::endl;
 

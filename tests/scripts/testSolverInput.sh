@@ -544,6 +544,15 @@ fresh3D
 check "3D: the case generates" [ -f "$scratch/c/0/water/position" ]
 (cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
 check "3D: the case runs" grep -q '^End' "$scratch/c/log.solver"
+# Built with y up, as in 2D: the log says that g is the default, along -z.
+expectIn "3D without constant/g: the log says which way is up" "$scratch/c/log.solver" \
+    "g = \\(0 0 -9.81\\) \\(no constant/g: the 3D default, up is \\+z\\)"
+rm -rf "$scratch/c"/0.*
+printf 'FoamFile { class uniformDimensionedVectorField; object g; }\ndimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81 0);\n' \
+    > "$scratch/c/constant/g"
+(cd "$scratch/c" && timeout 120 sphVcpmFsi > log.solver 2>&1)
+expectIn "3D with constant/g: its g, without the note" "$scratch/c/log.solver" "g = \\(0 -9.81 0\\)$"
+rm "$scratch/c/constant/g"
 rm -rf "$scratch/c"/0.*
 sed -i 's/max (0.2 0.4 0.2)/max (0.2 0.4)/' "$scratch/c/system/generateParticlesDict"
 (cd "$scratch/c" && generateParticles > log.generateParticles 2>&1)
