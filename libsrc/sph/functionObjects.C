@@ -1118,19 +1118,17 @@ void forces::writeFileHeader(std::ostream& os, const std::size_t file) const
            << " particles of body " << bodyName_ << " inside shapes, as it"
               " stands in the reference configuration (0/)\n";
     }
-    const std::string perDepth =
-        nDimensions_ == 2 ? " (2D: per metre of depth)" : "";
     if (file == 0)
     {
-        writeUnits(os, "Time [s], F [" + std::string(nDimensions_ == 2
-            ? "N/m" : "N") + "]" + perDepth);
+        writeUnits(os, "Time [s], F [" + perDepth("N", nDimensions_) + "]"
+            + perDepthNote(nDimensions_));
         os << "# Time Fx Fy Fz\n";
         return;
     }
     os << frame_.headerLine()
        << "# Moment about CofR " << str(CofR_, 10) << "\n";
-    writeUnits(os, "Time [s], M [" + std::string(nDimensions_ == 2
-        ? "N m/m" : "N m") + "]" + perDepth);
+    writeUnits(os, "Time [s], M [" + perDepth("N m", nDimensions_) + "]"
+        + perDepthNote(nDimensions_));
     os << "# Time Mx My Mz\n";
 }
 
@@ -1168,10 +1166,9 @@ std::vector<scalar> energy::values(const solverSnapshot& s) const
 
 void energy::writeHeader(std::ostream& os) const
 {
-    writeUnits(os, nDimensions_ == 2
-        ? "Time [s], mass [kg/m], kinetic and potential [J/m] (2D: per"
-          " metre of depth)"
-        : "Time [s], mass [kg], kinetic and potential [J]");
+    writeUnits(os, "Time [s], mass [" + perDepth("kg", nDimensions_)
+        + "], kinetic and potential [" + perDepth("J", nDimensions_) + "]"
+        + perDepthNote(nDimensions_));
     os << "# Time mass kinetic potential\n";
 }
 
