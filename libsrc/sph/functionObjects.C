@@ -574,7 +574,7 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         // diagonal ones): least squares of x_j - x_p = F (X_j - X_p).
         for (const vec3& P : locations_)
         {
-            attachment a{nearestReference(X, P), {}, {}, 0, {0, 0, 0}, {}};
+            attachment a{nearestReference(X, P), {}, {}, 0, {0, 0, 0}};
             const point Xp = X[a.particle];
             a.reference = toVec3(Xp);
             const scalar d = mag(toVec3(Xp) - P);
@@ -590,7 +590,6 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
             const scalar r2 = 2.25*solidDp_*solidDp_;
             for (label j = 0; j < label(X.size()); ++j)
             {
-                if (magSqr(X[j] - P) <= r2) a.around.push_back(j);
                 if (j == a.particle || magSqr(X[j] - Xp) > r2) continue;
                 a.neighbours.push_back(j);
                 addOuter(A, X[j] - Xp, X[j] - Xp);
@@ -643,19 +642,34 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         here.push_back(toVec3(xp) + vec3{scalar(moved[0]), scalar(moved[1]),
                                          scalar(planar ? 0 : moved[2])});
     }
-    // The side of the solid each point is on: out from the mean of the
-    // particles round it (below a face, whichever particle is nearest).
+    // The side of the solid each point is on: the outward normal at its
+    // particle, from the mean of the particle and its neighbours to the
+    // particle (square to a flat face, whatever the point's place along
+    // it). A single row of particles (a sheet in 3D) has no inside: there,
+    // from the particle out to the point, square to the row. Amid the
+    // solid, none.
     for (std::size_t k = 0; k < locations_.size(); ++k)
     {
         const attachment& a = attached_[k];
-        if (a.around.empty()) continue;
-        vec3 mean{0, 0, 0};
-        for (const label j : a.around) mean += toVec3(x[j]);
-        mean = mean/scalar(a.around.size());
-        const vec3 out = here[k] - mean;
+        const vec3 xp = toVec3(x[a.particle]);
+        vec3 mean = xp;
+        for (const label j : a.neighbours) mean += toVec3(x[j]);
+        vec3 out = xp - mean/scalar(a.neighbours.size() + 1);
+        if (mag(out) <= 0.1*solidDp_)
+        {
+            std::vector<vec3> along;    // orthonormal, spanning the row
+            for (const label j : a.neighbours)
+            {
+                vec3 o = toVec3(x[j]) - xp;
+                for (const vec3& e : along) o = o - dot(o, e)*e;
+                if (mag(o) > 0.1*solidDp_) along.push_back(o/mag(o));
+            }
+            out = here[k] - xp;
+            for (const vec3& e : along) out = out - dot(out, e)*e;
+        }
         if (mag(out) > 0.1*solidDp_)
         {
-            faces_[k] = {toVec3(x[a.particle]), out/mag(out)};
+            faces_[k] = {xp, out/mag(out)};
         }
     }
     return here;
@@ -702,19 +716,32 @@ std::vector<std::vector<scalar>> probes::rows(const solverSnapshot& s) const
             // default, is any fluid in reach: a wall's pressure sensor
             // feels a jet thinner than the support (Lobovsky's sensor 1
             // read the arrival 5 % later with 0.5).
-            scalar walls = 0;
+            // On a solid, the support on the point's side of the solid's
+            // face (half a spacing out from the plane through its
+            // particle) and the walls there.
+            const scalar face = 0.5*solidDp_;
+            scalar room = 0;
             if (wetFraction_ > 0)
             {
+                room = oneSide
+                     ? kernelShareInFrontOfPlane(kernel, nDimensions_,
+                           dot(here[k] - base, normal) - face)
+                     : 1;
                 // A wall particle's volume dp^d (its mass is rho0 dp^d; its
                 // rho follows the extrapolated pressure).
                 forEachNear(s, kernel, x, false,
                     [&](const label j, const scalar r)
                     {
-                        walls += kernel.W(r)*pf.mass[j]/s.model.rho0;
+                        if (oneSide
+                         && dot(toVec3(pf.position[j]) - base, normal) < face)
+                        {
+                            return;
+                        }
+                        room -= kernel.W(r)*pf.mass[j]/s.model.rho0;
                     });
             }
             if (sumW > 0
-             && sumW >= wetFraction_*std::max(scalar(0), 1 - walls))
+             && sumW >= wetFraction_*std::max(scalar(0), room))
             {
                 p[k] = sumP/sumW;
                 rho[k] = sumRho/sumW;

@@ -75,16 +75,21 @@ struct tankScene
     particleFields fields;
     cellList cells;
     std::vector<bodyInfo> bodies;
+    std::vector<point> gatePoints;
 
     // sideBody: the right side wall is a body of its own, "side", standing
     // on the floor (an obstacle on the floor, as generateParticles makes
     // one: its particles start at the floor's top).
     // shift: everything moved by it (the tank as a motion has carried it).
+    // gateLayers: a solid plate "gate" of that many particles across
+    // (x = 0.195, 0.205, ...) from the floor to y = 0.3 in place of the
+    // water there, the tank dry to its right; gatePoints its particles.
     explicit tankScene(const vec3& fluidVelocity = {0, 0, 0},
                        scalar nu = 1e-6,
                        viscosityType visc = viscosityType::laminar,
                        bool sideBody = false,
-                       const vec3& shift = {0, 0, 0})
+                       const vec3& shift = {0, 0, 0},
+                       int gateLayers = 0)
     {
         model.nDimensions = 2;
         model.dp = dp;
@@ -108,9 +113,18 @@ struct tankScene
         std::vector<particle> ps;
         for (int j = 0; j < 20; ++j)
         {
-            for (int i = 0; i < 40; ++i)
+            for (int i = 0; i < (gateLayers ? 19 : 40); ++i)
             {
                 ps.push_back({{(i + 0.5)*dp, (j + 0.5)*dp, 0}, fluidKind, 0});
+            }
+        }
+        for (int j = 0; j < 30; ++j)
+        {
+            for (int i = 19; i < 19 + gateLayers; ++i)
+            {
+                const point x{(i + 0.5)*dp, (j + 0.5)*dp, 0};
+                ps.push_back({x, solidKind, 3});
+                gatePoints.push_back(x);
             }
         }
         for (int k = 0; k < 3; ++k)
@@ -716,6 +730,65 @@ TEST(functionObjects, probesOnASolidReadTheirSide)
     EXPECT_NEAR(faces.at(1), p + extra, 0.01*(p + extra));
     EXPECT_GT(fixed.at(0), p + 0.05*extra);    // the far side's water in it (9 %)
     EXPECT_LT(fixed.at(1), p + 0.95*extra);
+}
+
+
+TEST(functionObjects, probesOnASolidFindTheSurfaceAsOnAWall)
+{
+    // With wetFraction a sensor on a plate's face counts the room that its
+    // side of the face leaves, as one on a wall's face does: on the face
+    // of a plate thinner than the support it reads what a sensor on the
+    // tank's side wall reads at the same height, wet below the still
+    // water's surface (H = 0.2) and dry above it, and 0 on the dry face.
+    // (The plate's side was once taken out from the particles round the
+    // point, tilted up to 40 degrees between two rows: 2 % off at the
+    // surface, which a 1-particle plate found 0.2 dp low.)
+    scratchDir tmp;
+    for (const int layers : {1, 2, 3})
+    {
+        SCOPED_TRACE(std::to_string(layers) + " layers");
+        const tankScene tank({0, 0, 0}, 1e-6, viscosityType::laminar,
+                             false, {0, 0, 0}, layers);
+        const std::vector<solidView> solids{
+            {"gate", &tank.gatePoints, &tank.gatePoints, 0}};
+        solverSnapshot snap = tank.snapshot();
+        snap.solids = &solids;
+        std::vector<scalar> ys;
+        std::string wall, face, dryFace;
+        const std::string dryX = std::to_string(0.19 + layers*dp);
+        for (int k = 0; k < 100; ++k)
+        {
+            const scalar y = 0.1505 + 0.001*k;
+            ys.push_back(y);
+            const std::string Y = " " + std::to_string(y) + " 0) ";
+            wall += "(0" + Y;
+            face += "(0.19" + Y;
+            dryFace += "(" + dryX + Y;
+        }
+        const auto read = [&](const std::string& entry)
+        {
+            auto fos = tank.read("p { type probes; wetFraction 0.5;"
+                                 + entry + "); }", tmp.path());
+            const auto* t =
+                dynamic_cast<const functionObjects::table*>(fos.at(0).get());
+            return t->values(snap);
+        };
+        const auto onWall = read("probeLocations (" + wall);
+        const auto onFace = read("onSolid gate; probeLocations (" + face);
+        const auto onDryFace =
+            read("onSolid gate; probeLocations (" + dryFace);
+        for (std::size_t k = 0; k < ys.size(); ++k)
+        {
+            SCOPED_TRACE("y = " + std::to_string(ys[k]));
+            EXPECT_EQ(onWall.at(k) > 0, ys[k] < H);
+            EXPECT_EQ(onFace.at(k) > 0, ys[k] < H);
+            EXPECT_EQ(onDryFace.at(k), 0);
+            if (layers > 1)
+            {
+                EXPECT_NEAR(onFace.at(k), onWall.at(k), 1e-6*onWall.at(k));
+            }
+        }
+    }
 }
 
 

@@ -368,6 +368,54 @@ TEST(sphKernels, cubicSpline)
     }
 }
 
+TEST(sphKernels, shareInFrontOfAPlane)
+{
+    // Half the kernel on either side of a plane through the point, all of
+    // it 2h in front, and a fine lattice's sum of W dV over the half-space
+    // in between.
+    const scalar h = 0.015;
+    for (const int nDim : {2, 3})
+    {
+        SCOPED_TRACE(std::to_string(nDim) + "D");
+        const wendlandC2Kernel w(h, nDim);
+        const cubicSplineKernel c(h, nDim);
+        for (const scalar d : {0.0, 0.3, -0.7, 1.4, 2.0, 2.5, -2.0})
+        {
+            const scalar share = kernelShareInFrontOfPlane(w, nDim, d*h);
+            EXPECT_NEAR(share + kernelShareInFrontOfPlane(w, nDim, -d*h), 1,
+                        1e-6);
+            EXPECT_NEAR(kernelShareInFrontOfPlane(c, nDim, d*h)
+                      + kernelShareInFrontOfPlane(c, nDim, -d*h), 1,
+                        1e-6);
+            if (d == 0) EXPECT_NEAR(share, 0.5, 1e-6);
+            if (d >= 2) EXPECT_EQ(share, 1);
+            // The lattice sum over the half-space x > -d h (the cells
+            // the plane cuts by their part in front).
+            const int n = nDim == 2 ? 200 : 60;
+            const scalar step = 4*h/n;
+            scalar sum = 0;
+            for (int i = 0; i < n; ++i)
+            {
+                const scalar x = -2*h + (i + 0.5)*step;
+                const scalar inFront = std::clamp(
+                    (x + 0.5*step + d*h)/step, scalar(0), scalar(1));
+                for (int j = 0; j < n; ++j)
+                {
+                    const scalar y = -2*h + (j + 0.5)*step;
+                    for (int k = 0; k < (nDim == 3 ? n : 1); ++k)
+                    {
+                        const scalar z =
+                            nDim == 3 ? -2*h + (k + 0.5)*step : 0;
+                        sum += inFront*w.W(std::sqrt(x*x + y*y + z*z))
+                             *std::pow(step, nDim);
+                    }
+                }
+            }
+            EXPECT_NEAR(share, sum, 2e-3) << "d = " << d;
+        }
+    }
+}
+
 TEST(sphKernels, latticeSums)
 {
     checkLattice<wendlandC2Kernel>("wendlandC2");
