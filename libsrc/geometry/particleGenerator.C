@@ -13,6 +13,7 @@
 #include "vcpmBeam.H"
 
 #include <algorithm>
+#include <iomanip>
 #include <map>
 #include <cmath>
 #include <ostream>
@@ -167,13 +168,19 @@ void particleGenerator::readBody
                 + bodyTypeName(type) + "; only solids may have their own"
                 " spacing (fluids and walls use the top-level dp)");
         }
-        if (rInt < 1 || rInt > 4 || std::abs(r - rInt) > 1e-6*r)
+        // Within 1 % of dp/r it is dp/r exactly: 'dp 0.00133;' for a
+        // top-level 0.004 is meant as 0.004/3, and the lattices must nest.
+        if (rInt < 1 || rInt > 4 || std::abs(r - rInt) > 0.01*r)
         {
-            dict.fatalAt("dp", "Keyword 'dp' of solid '" + name + "': expected"
-                " the top-level dp " + shapeDetail::str(dp_) + " divided by 1,"
-                " 2, 3 or 4, found " + shapeDetail::str(dp) + " (ratio "
-                + shapeDetail::str(r) + ")");
+            std::ostringstream os;
+            os.precision(10);
+            os << "Keyword 'dp' of solid '" << name << "': expected the"
+               << " top-level dp " << dp_ << " divided by 1, 2, 3 or 4 ("
+               << dp_ << ", " << dp_/2 << ", " << dp_/3 << " or " << dp_/4
+               << ", to 1 %), found " << dp << " (ratio " << r << ")";
+            dict.fatalAt("dp", os.str());
         }
+        dp = dp_/rInt;
     }
     try
     {
@@ -534,7 +541,9 @@ void particleGenerator::checkSolid
             if (r <= 4)
             {
                 os << " (the solid's own dp may be the top-level dp "
-                   << dp_ << " divided by 1 to 4: 'dp " << dp_/r << ";'"
+                   << dp_ << " divided by 1 to 4: 'dp "
+                   << std::setprecision(10) << dp_/r
+                   << std::setprecision(3) << ";'"
                    << " in its entry gives at least "
                    << std::lround(members.thinnestLayers*spec.dp*r/dp_)
                    << " layers)";
@@ -742,6 +751,7 @@ void particleGenerator::generate()
             s.nDropped = label(nNodes - nodes.size());
             s.gapExcess = gapExcess;
             s.volume = body.size()*cellVolume;
+            s.dp = spec.dp;
             if (type == bodyType::wall) s.U = spec.U;
             s.shapeVolume = spec.shapes.volume();
             if (type == bodyType::solid)
@@ -790,6 +800,10 @@ void particleGenerator::printSummary(std::ostream& os) const
                 os << ", error " << err.str() << " %";
             }
             os << ")";
+        }
+        if (s.dp != dp_)
+        {
+            os << ", dp " << s.dp << " (dp/" << std::lround(dp_/s.dp) << ")";
         }
         if (s.nClamped >= 0)
         {

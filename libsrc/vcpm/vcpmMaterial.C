@@ -56,7 +56,7 @@ vcpmMaterial::vcpmMaterial(const scalar E_, const scalar nu_,
                 ? (plane == planeModel::planeStress
                    ? "square2D plane-stress" : "square2D plane-strain")
                 : "simpleCubic3D")
-            << " lattice (theory.md 2.5)";
+            << " lattice (its springs need k + N T > 0; docs/vcpm.md, Choices)";
         bad("nu", nu, why.str());
     }
 

@@ -719,6 +719,11 @@ std::vector<badCase> badCases()
          " min (0 0 0); max (1 1 0); } }"), where::dict, "clamp",
          {"Keyword 'clamp'", "body 'water' is a fluid",
           "only solids have clamps"}},
+        {"solidDpNotADivisor", replaced(d, "        latticeOrigin (0.5 0 0);",
+         "        latticeOrigin (0.5 0 0);\n        dp 0.0032;"), where::dict,
+         "dp 0.0032", {"Keyword 'dp' of solid 'gate'", "expected the"
+         " top-level dp 0.01 divided by 1, 2, 3 or 4 (0.01, 0.005,"
+         " 0.003333333333 or 0.0025, to 1 %), found 0.0032 (ratio 3.125)"}},
         {"solidTooThin", replaced(d, "max (0.52 0.2 0)", "max (0.51 0.2 0)"),
          where::dict, "    gate", {"Solid 'gate' is too thin",
          "a member only 1 particle thick", "no second-neighbour bonds"}},
@@ -942,6 +947,26 @@ TEST(particleGenerator, includedBodyOverridden)
         .string() + " line 1 is given again here"), std::string::npos) << err;
     EXPECT_NE(err.find("generateParticlesDict at line 6"), std::string::npos)
         << err;
+}
+
+
+TEST(particleGenerator, solidDpIsAnExactDivisor)
+{
+    // 'dp 0.00333;' under a top-level 0.01 (3 digits, as one types it) is
+    // 0.01/3 to the last bit, the lattices nesting; the summary says so.
+    testCase c(replaced(exampleDict, "        latticeOrigin (0.5 0 0);",
+                        "        latticeOrigin (0.5 0 0);\n        dp 0.00333;"));
+    particleGenerator gen(c.path());
+    gen.generate();
+    const particleBody& gate = bodyNamed(gen, "gate");
+    EXPECT_EQ(gate.dp(), scalar(0.01)/3);
+    EXPECT_EQ(gate.size(), 6*60);
+    std::ostringstream os;
+    gen.printSummary(os);
+    EXPECT_NE(os.str().find("    gate (solid): 360 particles, volume 0.004"
+                            " m^2 (shapes 0.004 m^2, error +0.00 %),"
+                            " dp 0.00333333 (dp/3)"), std::string::npos)
+        << os.str();
 }
 
 
