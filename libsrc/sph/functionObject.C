@@ -48,18 +48,6 @@ functionObject::functionObject(std::string name, const dictionary& dict,
     if (dict.found("writeInterval"))
     {
         writeInterval_ = dict.getPositive("writeInterval");
-        if
-        (
-            writeControl_ == "timeStep"
-         && (writeInterval_ != std::floor(writeInterval_)
-          || writeInterval_ > std::numeric_limits<label>::max())
-        )
-        {
-            dict.fatalAt("writeInterval", "Function object '" + name_
-                + "': writeInterval of writeControl timeStep is a number"
-                  " of time steps (a whole number >= 1), found "
-                + str(double(writeInterval_)));
-        }
     }
     // NaN: nothing sampled yet (any finite value could be a real time).
     nextSampleTime_ = std::numeric_limits<scalar>::quiet_NaN();
@@ -67,6 +55,24 @@ functionObject::functionObject(std::string name, const dictionary& dict,
 
 
 // * * * * * * * * * * * * * * * Member functions * * * * * * * * * * * * * //
+
+void functionObject::checkWriteInterval() const
+{
+    if
+    (
+        writeControl_ == "timeStep"
+     && (writeInterval_ != std::floor(writeInterval_)
+      || writeInterval_ > std::numeric_limits<label>::max())
+    )
+    {
+        dict_.fatalAt("writeInterval", "Function object '" + name_
+            + "': writeInterval of writeControl timeStep"
+            + (dict_.found("writeControl") ? "" : " (the default)")
+            + " is a number of time steps (a whole number >= 1), found "
+            + str(double(writeInterval_)));
+    }
+}
+
 
 bool functionObject::due(const double time, const label timeIndex) const
 {
@@ -280,6 +286,9 @@ std::vector<std::unique_ptr<functionObject>> functionObject::readAll(
                 + "': unknown type '" + type + "'. Valid types are: "
                 + str(types));
         }
+        // After the type's own keyword check: a misspelt writeControl is
+        // named as such, not as a writeInterval of the default.
+        all.back()->checkWriteInterval();
     }
     return all;
 }

@@ -1108,7 +1108,16 @@ TEST(functionObjects, errorsNameTheEntry)
     {
         const auto err = error("e { type energy; writeInterval 0.5; }\n");
         EXPECT_EQ(err.keyword(), "writeInterval");
-        expectMessage(err, {"whole number"});
+        expectMessage(err, {"writeControl timeStep (the default)",
+                            "whole number"});
+    }
+    {
+        // A misspelt writeControl is named, not the writeInterval that
+        // would suit it.
+        const auto err = error("p { type probes; probeLocations ((0 0 0));"
+                               " writecontrol runTime; writeInterval 0.002; }\n");
+        EXPECT_EQ(err.keyword(), "writecontrol");
+        expectMessage(err, {"Did you mean 'writeControl'?"});
     }
     {
         const auto err = error(
