@@ -61,16 +61,19 @@ std::string shiftingName(const shiftingType s)
 namespace
 {
 
+// required: the end of the message where the file is missing ("" when
+// it may be).
 dictionary readCaseDict(const std::filesystem::path& caseDir,
-                        const std::string& relative, bool required)
+                        const std::string& relative,
+                        const std::string& required)
 {
     const auto file = caseDir/relative;
     if (!std::filesystem::exists(file))
     {
-        if (required)
+        if (!required.empty())
         {
-            fatalIOError(file.string(), 0,
-                "cannot find the file " + relative + " of the case");
+            fatalIOError(file.string(), 0, "cannot find the file "
+                + relative + " of the case" + required);
         }
         return dictionary(file.string());
     }
@@ -124,7 +127,8 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
 
     // system/sphSchemes
     {
-        dictionary dict = readCaseDict(caseDir, "system/sphSchemes", true);
+        dictionary dict = readCaseDict(caseDir, "system/sphSchemes",
+            " (an empty one takes every default: docs/solver.md)");
         dict.setCaseDimensions(nDimensions);
         dict.checkKeywords({"kernel", "hOverDp", "cellDivisor",
             "densityDiffusion", "viscosity", "shifting", "boundary",
@@ -271,7 +275,8 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
     // constant/fluidProperties
     {
         const dictionary dict =
-            readCaseDict(caseDir, "constant/fluidProperties", true);
+            readCaseDict(caseDir, "constant/fluidProperties",
+                " (it gives at least the density rho0: docs/solver.md)");
         dict.checkKeywords({"rho0", "nu", "c0", "coefSound", "speedSystem",
             "gamma", "turbulence"});
         // Dimensions, where written, must be these ([1 -3 0 0 0 0 0] for a

@@ -56,7 +56,11 @@ check "-device auto runs (on a GPU or falling back to the CPU)" grep -q '^End' "
 expectIn "-device auto says where it runs" "$scratch/c/log.solver" "device auto: running on the (GPU|CPU)"
 
 fresh; rm "$scratch/c/system/sphSchemes"
-expectFatal "missing sphSchemes" "FATAL IO ERROR" "system/sphSchemes"
+expectFatal "missing sphSchemes" "FATAL IO ERROR" "system/sphSchemes" \
+    "an empty one takes every default"
+fresh; rm "$scratch/c/constant/fluidProperties"
+expectFatal "missing fluidProperties" "FATAL IO ERROR" \
+    "constant/fluidProperties of the case \\(it gives at least the density rho0"
 
 fresh; sed -i 's/^kernel /kernal /' "$scratch/c/system/sphSchemes"
 line=$(grep -n '^kernal' "$scratch/c/system/sphSchemes" | cut -d: -f1)
