@@ -904,11 +904,27 @@ void fsiSolver::setSoundSpeed()
                      && model_.c0 == restartC0_;
     const scalar uScene = speedGiven ? model_.speedSystem
       : sameC0 ? 0 : std::sqrt(2*gMag*fluidHeight_);
-    const scalar uExpected = std::max(uScene, std::sqrt(u2));
+    // The moving walls and clamps drive the fluid at their own speed (a
+    // stroke in mm read as m is one 1000 times too fast).
+    scalar uWalls = 0;
+    std::string walls;
+    forEachMovedCorner([&](std::size_t b, double t, const point& x)
+    {
+        const scalar u =
+            mag(motions_.of(b)->transform(t).velocityAtPosition(x));
+        if (u <= uWalls) return;
+        uWalls = u;
+        walls = "the bodies of motion " + motions_.nameOf(b)
+            + " (constant/motion, lengths in m) move at up to " + str(u, 4)
+            + " m/s (body " + bodies_[b].name + ", time " + str(t, 4)
+            + " s)";
+    });
+    const scalar uExpected = std::max({uScene, std::sqrt(u2), uWalls});
     const scalar c0Min = 10*uExpected;
     if (model_.c0 < 3*uExpected)
     {
-        const std::string reaches = uScene < std::sqrt(u2)
+        const std::string reaches = uWalls == uExpected ? walls
+          : uScene < std::sqrt(u2)
           ? "the fluid moves at up to " + str(uExpected) + " m/s"
           : speedGiven
           ? "the fluid reaches about " + str(uExpected) + " m/s (speedSystem)"
@@ -923,7 +939,8 @@ void fsiSolver::setSoundSpeed()
     {
         warning("The speed of sound c0 = " + str(model_.c0) + " m/s is below "
             + str(c0Min) + " m/s, 10 times the speed expected in this scene"
-            " (" + str(uExpected) + " m/s): expect density errors of about "
+            " (" + (uWalls == uExpected ? walls : str(uExpected) + " m/s")
+            + "): expect density errors of about "
             + str(100*uExpected*uExpected/(model_.c0*model_.c0), 2) + " %",
             file);
     }
@@ -974,10 +991,9 @@ void grow(point& lo, point& hi, const point& x)
 } // End anonymous namespace
 
 
-void fsiSolver::growByMotions(point& lo, point& hi)
+void fsiSolver::forEachMovedCorner(const std::function<void(std::size_t b,
+    double t, const point& x)>& f) const
 {
-    // Moving bodies: their box wherever their motion takes them up to
-    // endTime (the box's corners moved, sampled in time).
     for (std::size_t b = 0; b < bodies_.size(); ++b)
     {
         if (!motions_.of(b)) continue;
@@ -997,10 +1013,21 @@ void fsiSolver::growByMotions(point& lo, point& hi)
             {
                 const point corner{c & 1 ? bhi.x : blo.x,
                     c & 2 ? bhi.y : blo.y, c & 4 ? bhi.z : blo.z};
-                grow(lo, hi, m.moved(corner));
+                f(b, t, m.moved(corner));
             }
         }
     }
+}
+
+
+void fsiSolver::growByMotions(point& lo, point& hi)
+{
+    // Moving bodies: their box wherever their motion takes them up to
+    // endTime.
+    forEachMovedCorner([&](std::size_t, double, const point& x)
+    {
+        grow(lo, hi, x);
+    });
 }
 
 

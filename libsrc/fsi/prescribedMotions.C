@@ -86,6 +86,16 @@ prescribedMotions::prescribedMotions
 }
 
 
+std::string prescribedMotions::nameOf(const std::size_t b) const
+{
+    for (const namedMotion& m : set_.motions())
+    {
+        if (&m.motion == of(b)) return m.name;
+    }
+    return "";
+}
+
+
 void prescribedMotions::checkWavemakerDepths
 (
     const std::vector<particleBody>& bodies,

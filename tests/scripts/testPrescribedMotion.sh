@@ -28,7 +28,8 @@
 # 5. What users write by mistake, each a clear error or warning: a motion
 #    already under way at the start time (the wall moved into the fluid), a
 #    misspelt constant/motions, a body the case has not, dimensions of the
-#    wrong kind, a phase in degrees; endTime raised during the run past
+#    wrong kind, a phase in degrees, a roll too fast for c0 (warned of) or
+#    far too fast (stopped before the run); endTime raised during the run past
 #    what the domain was sized for (a warning at once, an error saying to
 #    restart when the tank leaves it; the restart runs on).
 source "$(dirname "$0")/testLib.sh"
@@ -390,8 +391,14 @@ mistake()   # mistake <what> <sed expression on constant/motion> <pattern> [stat
 mistake "a tank tilted 10 degrees at the start" \
     's/angle   { .* }/angle   { type constant; value 10; units degrees; }/' \
     "Wall tank is moved 0.0[0-9]+ m by its motion at the start time 0 .*, into the fluid: [0-9]+ particles of water lie closer to it than the contact gap"
-# A motion in the wrong unit throws the tank: the blow-up says how fast the
-# walls go and points at constant/motion.
+# A motion in the wrong unit: weighed against c0 before the run, its
+# bodies' speed (the corners of their boxes, sampled to endTime) counts as
+# the fluid's. In radians where degrees were meant the tank's corners go
+# at 1.6 m/s against c0 = 9.9 m/s: warned of. A million degrees throws the
+# tank at 1e4 m/s: an error before the first step.
+mistake "a roll in radians where degrees were meant" \
+    's/units degrees; }/units radians; }/' \
+    "the bodies of motion roll \(constant/motion, lengths in m\) move at up to 1\.[0-9]+ m/s \(body tank, time [0-9.]+ s\)\): expect density errors"
 m="$scratch/thrown"
 rm -rf "$m"; cp -r "$scratch/stillWater" "$m"
 rm -rf "$m"/[1-9]* "$m"/0.* "$m/postProcessing"
@@ -400,8 +407,10 @@ sed -i 's/angle   { .* }/angle   { type sinusoid; amplitude 1e6; period 1; units
     "$m/constant/motion"
 timeout 300 sphVcpmFsi -case "$m" > "$scratch/log.thrown" 2>&1
 check "a tank thrown by its motion: exit status 1" [ $? -eq 1 ]
-expectIn "a tank thrown by its motion: the walls' speed and constant/motion" \
-    "$scratch/log.thrown" "Walls move here \(constant/motion\), at up to [0-9.e+]+ m/s"
+expectIn "a tank thrown by its motion: stopped before the run, naming the motion and its speed" \
+    "$scratch/log.thrown" "c0 = [0-9.]+ m/s is far too low for this scene: the bodies of motion roll \(constant/motion, lengths in m\) move at up to [0-9.e+]+ m/s"
+check "a tank thrown by its motion: no step taken" \
+    bash -c "! grep -q '^Time = ' '$scratch/log.thrown'"
 # rollingStep <name> <log> <command...>: one step of the rollingTank2D
 # tutorial, its constant/motion edited by the command (given the file last).
 rollingStep()
