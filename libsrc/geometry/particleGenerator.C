@@ -4,6 +4,7 @@
 // Particle bodies of a case from system/generateParticlesDict.
 
 #include "particleGenerator.H"
+#include "boundBox.H"
 #include "containerShape.H"
 #include "error.H"
 #include "hostMemory.H"
@@ -668,6 +669,7 @@ void particleGenerator::generate()
 
             const std::size_t nNodes = nodes.size();
             std::size_t nNearSolid = 0;     // walls: nodes a solid covers
+            boundBox dropped = boundBox::invalid();   // where they lie
             for (const auto& [obstacleDp, locator] : near)
             {
                 const scalar minDistance =
@@ -678,6 +680,10 @@ void particleGenerator::generate()
                     if (!locator.anyWithin(p, minDistance))
                     {
                         nodes[kept++] = p;
+                    }
+                    else
+                    {
+                        dropped.add(p);
                     }
                 }
                 nodes.resize(kept);
@@ -704,7 +710,10 @@ void particleGenerator::generate()
                 os << "Wall body '" << spec.name << "' overlaps the solid"
                    << " body (" << solids << "): " << nNearSolid << " of its"
                    << " lattice nodes lie within (dp + dp_s)/2 of solid"
-                   << " particles. Shape the wall around the solid, or hold"
+                   << " particles, from "
+                   << shapeDetail::str(dropped.min, nDimensions_) << " to "
+                   << shapeDetail::str(dropped.max, nDimensions_)
+                   << ". Shape the wall around the solid, or hold"
                    << " the solid's end with its clamp { ... } instead of"
                    << " burying it in the wall";
                 fatalIOError(spec.file, spec.line, os.str(),
@@ -773,6 +782,44 @@ void particleGenerator::generate()
             group.names += (group.names.empty() ? "" : ", ") + spec.name;
             bodies_.push_back(std::move(body));
         }
+    }
+    warnSolidsOutside();
+}
+
+
+void particleGenerator::warnSolidsOutside() const
+{
+    // Fluid and walls: where the water can go. A solid clear of their box
+    // (a slip of a coordinate) feels nothing, yet the run goes on.
+    boundBox scene = boundBox::invalid();
+    for (const particleBody& b : bodies_)
+    {
+        if (b.type() == bodyType::solid) continue;
+        for (const point& x : b.position()) scene.add(toVec3(x));
+    }
+    if (!scene.valid()) return;   // solids alone
+    for (std::size_t k = 0; k < bodies_.size(); ++k)
+    {
+        const particleBody& b = bodies_[k];
+        if (b.type() != bodyType::solid || b.size() == 0) continue;
+        boundBox box = boundBox::invalid();
+        for (const point& x : b.position()) box.add(toVec3(x));
+        bool apart = false;
+        for (int d = 0; d < nDimensions_; ++d)
+        {
+            apart |= box.min[d] > scene.max[d] + dp_
+                  || box.max[d] < scene.min[d] - dp_;
+        }
+        if (!apart) continue;
+        const bodySpec& spec = *std::find_if(specs_.begin(), specs_.end(),
+            [&](const bodySpec& s) { return s.name == b.name(); });
+        warning("Solid '" + b.name() + "' lies outside the box of the fluid"
+            " and the walls (" + shapeDetail::str(scene.min, nDimensions_)
+            + " to " + shapeDetail::str(scene.max, nDimensions_) + "): its"
+            " particles span " + shapeDetail::str(box.min, nDimensions_)
+            + " to " + shapeDetail::str(box.max, nDimensions_) + ", where no"
+            " water reaches it and no wall holds it. Check its shapes, clamp"
+            " and latticeOrigin", spec.file, spec.line);
     }
 }
 
