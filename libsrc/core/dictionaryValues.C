@@ -464,8 +464,17 @@ std::vector<std::string> readValue(valueReader& r, std::vector<std::string>*)
 
 std::vector<vec3> readValue(valueReader& r, std::vector<vec3>*)
 {
-    return r.readList<vec3>([&]{ return r.readVector(); },
-                            "a list of vectors");
+    return r.readList<vec3>([&]
+    {
+        // (0.3 0.05 0) for one point: say how a list of one is written.
+        if (!r.atEnd() && (r.peek().type == token::kind::integer
+                        || r.peek().type == token::kind::floating))
+        {
+            r.expected("'(' to start a vector of the list (a list of"
+                " points is ((x y z) ...), and one point ((x y z)))");
+        }
+        return r.readVector();
+    }, "a list of vectors");
 }
 
 

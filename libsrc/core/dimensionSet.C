@@ -9,6 +9,7 @@
 #include "dictionaryParser.H"
 #include "formatting.H"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -309,12 +310,22 @@ private:
             {
                 known.push_back(u.name);
             }
+            // MPa, mm, kN: a prefix on a known unit. Values are SI.
+            const std::string unprefixed =
+                p.text.size() > 1 && std::string("kMGmcu").find(p.text[0])
+                    != std::string::npos ? p.text.substr(1) : "";
+            const bool prefixed = std::any_of(known.begin(), known.end(),
+                [&](const std::string& k) { return k == unprefixed; });
             const std::string guess =
                 dictionaryDetail::closest(p.text, known);
             throw unitError
             {
                 "unknown unit '" + p.text + "'"
-              + (guess.empty() ? "" : " (did you mean '" + guess + "'?)")
+              + (prefixed
+                 ? " (units take no prefix: values are in SI units, so "
+                   "write the value in " + unprefixed + ", e.g. 2 MPa as "
+                   "[Pa] 2e6)"
+                 : guess.empty() ? "" : " (did you mean '" + guess + "'?)")
               + "; known units are " + str(known)
             };
         }

@@ -259,6 +259,11 @@ const std::vector<valueCase> valueCases =
      [](const dictionary& d){ d.get<vec3>("g"); }, 1,
      {"expected '(' to start a vector (x y z)",
       "found floating-point number 9.81"}},
+    {"pointForListOfPoints", "probeLocations (0.29 0.05 0);\n",
+     [](const dictionary& d){ d.get<std::vector<vec3>>("probeLocations"); },
+     1, {"Keyword 'probeLocations'", "expected '(' to start a vector of the"
+      " list (a list of points is ((x y z) ...), and one point ((x y z)))",
+      "found floating-point number 0.29"}},
     {"uniformListUnclosed", "l 3{1 2};\n",
      [](const dictionary& d){ d.get<std::vector<double>>("l"); }, 1,
      {"expected '}' to close the uniform list 3{...}", "found integer 2"}},
