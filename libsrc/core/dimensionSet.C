@@ -311,9 +311,13 @@ private:
                 known.push_back(u.name);
             }
             // MPa, mm, kN: a prefix on a known unit. Values are SI.
+            const std::string prefixes = "GMkhdcmun";
+            const char* factors[] = {"1e9", "1e6", "1e3", "100", "0.1",
+                                     "0.01", "0.001", "1e-6", "1e-9"};
+            const std::size_t prefix = p.text.size() > 1
+                ? prefixes.find(p.text[0]) : std::string::npos;
             const std::string unprefixed =
-                p.text.size() > 1 && std::string("kMGmcu").find(p.text[0])
-                    != std::string::npos ? p.text.substr(1) : "";
+                prefix != std::string::npos ? p.text.substr(1) : "";
             const bool prefixed = std::any_of(known.begin(), known.end(),
                 [&](const std::string& k) { return k == unprefixed; });
             const std::string guess =
@@ -323,8 +327,8 @@ private:
                 "unknown unit '" + p.text + "'"
               + (prefixed
                  ? " (units take no prefix: values are in SI units, so "
-                   "write the value in " + unprefixed + ", e.g. 2 MPa as "
-                   "[Pa] 2e6)"
+                   "write the value in " + unprefixed + ": 1 " + p.text
+                   + " is [" + unprefixed + "] " + factors[prefix] + ")"
                  : guess.empty() ? "" : " (did you mean '" + guess + "'?)")
               + "; known units are " + str(known)
             };

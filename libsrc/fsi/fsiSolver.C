@@ -1003,6 +1003,7 @@ void fsiSolver::forEachMovedCorner(const std::function<void(std::size_t b,
             if (particles_.body[i] != b) continue;
             grow(blo, bhi, particles_.position[i]);
         }
+        if (blo.x > bhi.x) continue;    // no particle left
         const int nSamples = 2000;
         for (int k = 0; k <= nSamples; ++k)
         {

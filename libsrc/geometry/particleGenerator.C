@@ -157,10 +157,12 @@ void particleGenerator::readBody
     const bodyType type = bodyTypeFromName(
         dict.getWord("type", {"fluid", "solid", "wall"}));
     // A solid may be finer than the fluid: dp/r, r = 1..4 (multi-resolution).
+    scalar givenDp = 0;
     scalar dp = dp_;
     if (dict.found("dp"))
     {
         dp = dict.getPositive("dp");
+        givenDp = dp;
         const scalar r = dp_/dp;
         const scalar rInt = std::round(r);
         if (type != bodyType::solid)
@@ -207,7 +209,8 @@ void particleGenerator::readBody
         "",
         0,
         std::nullopt,   // material, read below
-        dp
+        dp,
+        givenDp
     };
     if (nDimensions_ == 2 && spec.U.z != 0)
     {
@@ -761,6 +764,7 @@ void particleGenerator::generate()
             s.gapExcess = gapExcess;
             s.volume = body.size()*cellVolume;
             s.dp = spec.dp;
+            s.givenDp = spec.givenDp;
             if (type == bodyType::wall) s.U = spec.U;
             s.shapeVolume = spec.shapes.volume();
             if (type == bodyType::solid)
@@ -817,9 +821,10 @@ void particleGenerator::warnSolidsOutside() const
             " and the walls (" + shapeDetail::str(scene.min, nDimensions_)
             + " to " + shapeDetail::str(scene.max, nDimensions_) + "): its"
             " particles span " + shapeDetail::str(box.min, nDimensions_)
-            + " to " + shapeDetail::str(box.max, nDimensions_) + ", where no"
-            " water reaches it and no wall holds it. Check its shapes, clamp"
-            " and latticeOrigin", spec.file, spec.line);
+            + " to " + shapeDetail::str(box.max, nDimensions_) + ": at the"
+            " start no water reaches it (unless it falls or a motion carries"
+            " it in). Check its shapes, clamp and latticeOrigin",
+            spec.file, spec.line);
     }
 }
 
@@ -848,9 +853,13 @@ void particleGenerator::printSummary(std::ostream& os) const
             }
             os << ")";
         }
-        if (s.dp != dp_)
+        const bool snapped = s.givenDp > 0
+            && std::abs(s.givenDp - s.dp) > 1e-9*s.dp;
+        if (s.dp != dp_ || snapped)
         {
-            os << ", dp " << s.dp << " (dp/" << std::lround(dp_/s.dp) << ")";
+            os << ", dp " << s.dp << " (dp/" << std::lround(dp_/s.dp);
+            if (snapped) os << ", for the dp " << s.givenDp << " given";
+            os << ")";
         }
         if (s.nClamped >= 0)
         {

@@ -550,6 +550,64 @@ std::vector<scalar> probes::values(const solverSnapshot& s) const
 }
 
 
+namespace
+{
+
+// The outward normal of a solid, in its reference lattice, at its
+// particle p for the point P: out from the mean of p and its neighbours
+// to p, which is square to a flat face; at an edge or corner the lattice
+// axis of that direction along which P lies farthest out (a sensor on a
+// plate's face, or on its top, beside a corner particle), or the diagonal
+// where P lies along none. A single row of particles (a sheet in 3D) has
+// no inside: from p out to P, square to the row. Amid the solid: 0.
+vec3 referenceNormal(const std::vector<point>& X,
+                     const std::vector<label>& neighbours, const label p,
+                     const vec3& P, const bool planar)
+{
+    const vec3 Xp = toVec3(X[p]);
+    vec3 mean = Xp;
+    for (const label j : neighbours) mean += toVec3(X[j]);
+    const vec3 out = Xp - mean/scalar(neighbours.size() + 1);
+    const vec3 V = P - Xp;
+    // Neighbour spacings are dp or more; a tenth of the smallest.
+    scalar small = std::numeric_limits<scalar>::max();
+    for (const label j : neighbours) small = std::min(small, mag(X[j] - X[p]));
+    small = neighbours.empty() ? 0 : scalar(0.1)*small;
+    if (mag(out) <= small)
+    {
+        std::vector<vec3> along;    // orthonormal, spanning the row
+        for (const label j : neighbours)
+        {
+            vec3 o = toVec3(X[j]) - Xp;
+            for (const vec3& e : along) o = o - dot(o, e)*e;
+            if (mag(o) > small) along.push_back(o/mag(o));
+        }
+        vec3 n = V;
+        for (const vec3& e : along) n = n - dot(n, e)*e;
+        if (planar) n.z = 0;
+        return mag(n) > small ? n/mag(n) : vec3{0, 0, 0};
+    }
+    int axis = -1;
+    scalar farthest = 0;
+    for (int i = 0; i < (planar ? 2 : 3); ++i)
+    {
+        if (std::fabs(out[i]) <= small) continue;
+        const scalar reach = out[i] > 0 ? V[i] : -V[i];
+        if (reach > farthest)
+        {
+            farthest = reach;
+            axis = i;
+        }
+    }
+    if (axis < 0) return out/mag(out);
+    vec3 n{0, 0, 0};
+    n[axis] = out[axis] > 0 ? 1 : -1;
+    return n;
+}
+
+} // End anonymous namespace
+
+
 std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
 {
     std::vector<vec3> here;
@@ -594,6 +652,8 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
                 a.neighbours.push_back(j);
                 addOuter(A, X[j] - Xp, X[j] - Xp);
             }
+            a.normal = referenceNormal(X, a.neighbours, a.particle, P,
+                                       planar);
             // In the plane z maps to itself: an entry of A's size there.
             if (planar) A[2][2] = 0.5*(A[0][0] + A[1][1]);
             a.zz = A[2][2];
@@ -617,9 +677,11 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         const point offset = toPoint(locations_[k]) - Xp;
         bool translate = true;
         for (int i = 0; i < 3; ++i) translate &= a.inverseA[i][i] == 0;
+        const bool hasSide = magSqr(a.normal) > 0;
         if (translate)
         {
             here.push_back(toVec3(xp + offset));
+            if (hasSide) faces_[k] = {toVec3(xp), a.normal};
             continue;
         }
         double B[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, planar ? a.zz : 0}};
@@ -641,36 +703,27 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         }
         here.push_back(toVec3(xp) + vec3{scalar(moved[0]), scalar(moved[1]),
                                          scalar(planar ? 0 : moved[2])});
-    }
-    // The side of the solid each point is on: the outward normal at its
-    // particle, from the mean of the particle and its neighbours to the
-    // particle (square to a flat face, whatever the point's place along
-    // it). A single row of particles (a sheet in 3D) has no inside: there,
-    // from the particle out to the point, square to the row. Amid the
-    // solid, none.
-    for (std::size_t k = 0; k < locations_.size(); ++k)
-    {
-        const attachment& a = attached_[k];
-        const vec3 xp = toVec3(x[a.particle]);
-        vec3 mean = xp;
-        for (const label j : a.neighbours) mean += toVec3(x[j]);
-        vec3 out = xp - mean/scalar(a.neighbours.size() + 1);
-        if (mag(out) <= 0.1*solidDp_)
+        if (!hasSide) continue;
+        // A normal turns and stretches by F^-T, F = B A^-1.
+        double F[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, Finv[3][3];
+        for (int i = 0; i < 3; ++i)
         {
-            std::vector<vec3> along;    // orthonormal, spanning the row
-            for (const label j : a.neighbours)
+            for (int j = 0; j < 3; ++j)
             {
-                vec3 o = toVec3(x[j]) - xp;
-                for (const vec3& e : along) o = o - dot(o, e)*e;
-                if (mag(o) > 0.1*solidDp_) along.push_back(o/mag(o));
+                for (int m = 0; m < 3; ++m) F[i][j] += B[i][m]*a.inverseA[m][j];
             }
-            out = here[k] - xp;
-            for (const vec3& e : along) out = out - dot(out, e)*e;
         }
-        if (mag(out) > 0.1*solidDp_)
+        vec3 n = a.normal;
+        if (invert3(F, Finv))
         {
-            faces_[k] = {xp, out/mag(out)};
+            for (int i = 0; i < 3; ++i)
+            {
+                n[i] = scalar(Finv[0][i]*a.normal[0] + Finv[1][i]*a.normal[1]
+                            + Finv[2][i]*a.normal[2]);
+            }
+            if (planar) n.z = 0;
         }
+        if (mag(n) > 0) faces_[k] = {toVec3(xp), n/mag(n)};
     }
     return here;
 }

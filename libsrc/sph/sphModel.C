@@ -276,7 +276,7 @@ sphModel readSphModel(const std::filesystem::path& caseDir,
     {
         const dictionary dict =
             readCaseDict(caseDir, "constant/fluidProperties",
-                " (it gives at least the density rho0: docs/solver.md)");
+                " (it needs rho0, and c0 or coefSound: docs/solver.md)");
         dict.checkKeywords({"rho0", "nu", "c0", "coefSound", "speedSystem",
             "gamma", "turbulence"});
         // Dimensions, where written, must be these ([1 -3 0 0 0 0 0] for a

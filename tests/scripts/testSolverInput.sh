@@ -60,7 +60,7 @@ expectFatal "missing sphSchemes" "FATAL IO ERROR" "system/sphSchemes" \
     "an empty one takes every default"
 fresh; rm "$scratch/c/constant/fluidProperties"
 expectFatal "missing fluidProperties" "FATAL IO ERROR" \
-    "constant/fluidProperties of the case \\(it gives at least the density rho0"
+    "constant/fluidProperties of the case \\(it needs rho0, and c0 or coefSound"
 
 fresh; sed -i 's/^kernel /kernal /' "$scratch/c/system/sphSchemes"
 line=$(grep -n '^kernal' "$scratch/c/system/sphSchemes" | cut -d: -f1)

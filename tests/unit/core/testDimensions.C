@@ -164,10 +164,11 @@ TEST(dimensionedValues, malformedDimensions)
           "known units are (kg m s K mol A cd N Pa J W Hz", "[kgg/m^3]"}},
         {"rho [furlong] 1;\n", 1, {"unknown unit 'furlong'"}},
         {"E [MPa] 2;\n", 1, {"unknown unit 'MPa' (units take no prefix:"
-         " values are in SI units, so write the value in Pa, e.g. 2 MPa as"
-         " [Pa] 2e6)"}},
+         " values are in SI units, so write the value in Pa: 1 MPa is [Pa]"
+         " 1e6)"}},
         {"amplitude [mm] 10;\n", 1, {"unknown unit 'mm' (units take no"
-         " prefix: values are in SI units, so write the value in m"}},
+         " prefix: values are in SI units, so write the value in m: 1 mm is"
+         " [m] 0.001)"}},
         {"nu [0 2 -1 0] 1;\n", 1,
          {"expected 5 or 7 dimension exponents, found 4"}},
         {"nu [0 2 -1 0 0 0 0 0] 1;\n", 1,

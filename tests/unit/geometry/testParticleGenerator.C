@@ -967,8 +967,8 @@ TEST(particleGenerator, solidDpIsAnExactDivisor)
     gen.printSummary(os);
     EXPECT_NE(os.str().find("    gate (solid): 360 particles, volume 0.004"
                             " m^2 (shapes 0.004 m^2, error +0.00 %),"
-                            " dp 0.00333333 (dp/3)"), std::string::npos)
-        << os.str();
+                            " dp 0.00333333 (dp/3, for the dp 0.00333"
+                            " given)"), std::string::npos) << os.str();
 }
 
 

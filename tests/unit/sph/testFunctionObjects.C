@@ -84,12 +84,14 @@ struct tankScene
     // gateLayers: a solid plate "gate" of that many particles across
     // (x = 0.195, 0.205, ...) from the floor to y = 0.3 in place of the
     // water there, the tank dry to its right; gatePoints its particles.
+    // gateRows below 20: the gate that many rows high, under the water,
+    // which fills the tank round it.
     explicit tankScene(const vec3& fluidVelocity = {0, 0, 0},
                        scalar nu = 1e-6,
                        viscosityType visc = viscosityType::laminar,
                        bool sideBody = false,
                        const vec3& shift = {0, 0, 0},
-                       int gateLayers = 0)
+                       int gateLayers = 0, int gateRows = 30)
     {
         model.nDimensions = 2;
         model.dp = dp;
@@ -113,12 +115,15 @@ struct tankScene
         std::vector<particle> ps;
         for (int j = 0; j < 20; ++j)
         {
-            for (int i = 0; i < (gateLayers ? 19 : 40); ++i)
+            for (int i = 0; i < 40; ++i)
             {
+                const bool inGate = gateLayers && i >= 19
+                    && (gateRows >= 20 || (i < 19 + gateLayers && j < gateRows));
+                if (inGate) continue;
                 ps.push_back({{(i + 0.5)*dp, (j + 0.5)*dp, 0}, fluidKind, 0});
             }
         }
-        for (int j = 0; j < 30; ++j)
+        for (int j = 0; j < gateRows; ++j)
         {
             for (int i = 19; i < 19 + gateLayers; ++i)
             {
@@ -789,6 +794,43 @@ TEST(functionObjects, probesOnASolidFindTheSurfaceAsOnAWall)
             }
         }
     }
+}
+
+
+TEST(functionObjects, probesOnASolidsCornerReadTheirFace)
+{
+    // A plate 2 particles across and 10 high (top at y = 0.1) under 0.2 m
+    // of water. Sensors on its top, either over a corner particle or
+    // between the two, read as a probe on a floor does, the side above
+    // (rho g (H - 0.1) less about rho g dp/2, the one-sided mean); on its
+    // side face beside the top corner particle, the side out from the face
+    // (as at mid-height). A corner's normal is the axis the point lies out
+    // along, not the diagonal from the particles round it.
+    scratchDir tmp;
+    const tankScene tank({0, 0, 0}, 1e-6, viscosityType::laminar, false,
+                         {0, 0, 0}, 2, 10);
+    const std::vector<solidView> solids{
+        {"gate", &tank.gatePoints, &tank.gatePoints, 0}};
+    solverSnapshot snap = tank.snapshot();
+    snap.solids = &solids;
+    auto fos = tank.read("p { type probes; onSolid gate; probeLocations"
+        " ((0.2 0.1 0) (0.196 0.1 0) (0.19 0.097 0) (0.19 0.05 0)); }",
+        tmp.path());
+    const auto* t =
+        dynamic_cast<const functionObjects::table*>(fos.at(0).get());
+    const auto p = t->values(snap);
+    const scalar top = tankScene::hydrostatic(0.1);
+    for (const int k : {0, 1})
+    {
+        EXPECT_LT(p.at(k), top);
+        EXPECT_GT(p.at(k), top - rho0*gMag*dp);
+    }
+    // (The diagonal read 2 % apart on the top, and 2.2 % low beside it.)
+    EXPECT_NEAR(p.at(1), p.at(0), 0.01*top);
+    EXPECT_NEAR(p.at(2), tankScene::hydrostatic(0.097),
+                0.005*tankScene::hydrostatic(0.097));
+    EXPECT_NEAR(p.at(3), tankScene::hydrostatic(0.05),
+                0.005*tankScene::hydrostatic(0.05));
 }
 
 
