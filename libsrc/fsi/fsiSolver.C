@@ -907,18 +907,23 @@ void fsiSolver::setSoundSpeed()
     // The moving walls and clamps drive the fluid at their own speed (a
     // stroke in mm read as m is one 1000 times too fast).
     scalar uWalls = 0;
-    std::string walls;
+    std::size_t fastestBody = 0;
+    double fastestTime = 0;
     forEachMovedCorner([&](std::size_t b, double t, const point& x)
     {
         const scalar u =
             mag(motions_.of(b)->transform(t).velocityAtPosition(x));
         if (u <= uWalls) return;
         uWalls = u;
-        walls = "the bodies of motion " + motions_.nameOf(b)
-            + " (constant/motion, lengths in m) move at up to " + str(u, 4)
-            + " m/s (body " + bodies_[b].name + ", time " + str(t, 4)
-            + " s)";
+        fastestBody = b;
+        fastestTime = t;
     });
+    const std::string walls = uWalls > 0
+      ? "the bodies of motion " + motions_.nameOf(fastestBody)
+        + " (constant/motion, lengths in m) move at up to "
+        + str(uWalls, 4) + " m/s (body " + bodies_[fastestBody].name
+        + ", time " + str(fastestTime, 4) + " s)"
+      : "";
     const scalar uExpected = std::max({uScene, std::sqrt(u2), uWalls});
     const scalar c0Min = 10*uExpected;
     if (model_.c0 < 3*uExpected)

@@ -632,7 +632,7 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         // diagonal ones): least squares of x_j - x_p = F (X_j - X_p).
         for (const vec3& P : locations_)
         {
-            attachment a{nearestReference(X, P), {}, {}, 0, {0, 0, 0}};
+            attachment a{nearestReference(X, P), {}, {}, 0, {0, 0, 0}, {0, 0, 0}};
             const point Xp = X[a.particle];
             a.reference = toVec3(Xp);
             const scalar d = mag(toVec3(Xp) - P);
@@ -689,23 +689,9 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
         {
             addOuter(B, x[j] - xp, X[j] - Xp);
         }
-        // x = x_p + B A^-1 (P - X_p)
-        const double o[3] = {double(offset.x), double(offset.y),
-                             double(offset.z)};
-        double Ao[3] = {0, 0, 0}, moved[3] = {0, 0, 0};
-        for (int i = 0; i < 3; ++i)
-        {
-            for (int j = 0; j < 3; ++j) Ao[i] += a.inverseA[i][j]*o[j];
-        }
-        for (int i = 0; i < 3; ++i)
-        {
-            for (int j = 0; j < 3; ++j) moved[i] += B[i][j]*Ao[j];
-        }
-        here.push_back(toVec3(xp) + vec3{scalar(moved[0]), scalar(moved[1]),
-                                         scalar(planar ? 0 : moved[2])});
-        if (!hasSide) continue;
-        // A normal turns and stretches by F^-T, F = B A^-1.
-        double F[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, Finv[3][3];
+        // F = B A^-1: x = x_p + F (P - X_p), and a normal turns and
+        // stretches by F^-T.
+        double F[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
         for (int i = 0; i < 3; ++i)
         {
             for (int j = 0; j < 3; ++j)
@@ -713,7 +699,18 @@ std::vector<vec3> probes::pointsAt(const solverSnapshot& s) const
                 for (int m = 0; m < 3; ++m) F[i][j] += B[i][m]*a.inverseA[m][j];
             }
         }
+        const double o[3] = {double(offset.x), double(offset.y),
+                             double(offset.z)};
+        double moved[3] = {0, 0, 0};
+        for (int i = 0; i < 3; ++i)
+        {
+            for (int j = 0; j < 3; ++j) moved[i] += F[i][j]*o[j];
+        }
+        here.push_back(toVec3(xp) + vec3{scalar(moved[0]), scalar(moved[1]),
+                                         scalar(planar ? 0 : moved[2])});
+        if (!hasSide) continue;
         vec3 n = a.normal;
+        double Finv[3][3];
         if (invert3(F, Finv))
         {
             for (int i = 0; i < 3; ++i)
