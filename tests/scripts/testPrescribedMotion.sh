@@ -29,7 +29,8 @@
 #    already under way at the start time (the wall moved into the fluid), a
 #    misspelt constant/motions, a body the case has not, dimensions of the
 #    wrong kind, a phase in degrees, a roll too fast for c0 (warned of) or
-#    far too fast (stopped before the run); endTime raised during the run past
+#    far too fast (stopped before the run), a blow-up while the walls move (the
+#    diagnosis gives their speed); endTime raised during the run past
 #    what the domain was sized for (a warning at once, an error saying to
 #    restart when the tank leaves it; the restart runs on).
 source "$(dirname "$0")/testLib.sh"
@@ -411,6 +412,20 @@ expectIn "a tank thrown by its motion: stopped before the run, naming the motion
     "$scratch/log.thrown" "c0 = [0-9.]+ m/s is far too low for this scene: the bodies of motion roll \(constant/motion, lengths in m\) move at up to [0-9.e+]+ m/s"
 check "a tank thrown by its motion: no step taken" \
     bash -c "! grep -q '^Time = ' '$scratch/log.thrown'"
+# A run that blows up while the walls move says how fast they went: a
+# fixed step 20 times the CFL limit fails whatever the motion, and the
+# diagnosis tells the slow roll (well below c0) from a motion gone wrong.
+m="$scratch/tooLongSteps"
+rm -rf "$m"; cp -r "$scratch/stillWater" "$m"
+rm -rf "$m"/[1-9]* "$m"/0.* "$m/postProcessing"
+sed -i -e 's/^endTime .*/endTime 0.5;/' -e 's/^deltaT .*/deltaT 4e-3;/' \
+    -e 's/^adjustTimeStep .*/adjustTimeStep no;/' "$m/system/controlDict"
+timeout 300 sphVcpmFsi -case "$m" > "$scratch/log.tooLong" 2>&1
+check "a step too long in a moving tank: exit status 1" [ $? -eq 1 ]
+expectIn "a step too long in a moving tank: names the fixed step as the usual cause" \
+    "$scratch/log.tooLong" "a time step too large for the forces \(lower deltaT, or set adjustTimeStep yes\)"
+expectIn "a step too long in a moving tank: gives the walls' speed when it failed" \
+    "$scratch/log.tooLong" "Walls move here \(constant/motion\), at up to [0-9.e+-]+ m/s at time [0-9.]+: check that the motion is the one meant"
 # rollingStep <name> <log> <command...>: one step of the rollingTank2D
 # tutorial, its constant/motion edited by the command (given the file last).
 rollingStep()
