@@ -45,6 +45,21 @@ extern "C" void onStopSignal(const int sig)
     if (stopSignal.compare_exchange_strong(none, sig))
     {
         firstSignalNs = now;
+        // Said at once (write is async-signal-safe): a step that sub-cycles
+        // a stiff solid may take minutes, and a silent Ctrl-C looks lost.
+        static const char sigint[] = "\n--> Stop requested (SIGINT): the"
+            " step in progress finishes, its state is written and the run"
+            " stops; signal again, a second or more from now, to end at"
+            " once without writing\n";
+        static const char sigterm[] = "\n--> Stop requested (SIGTERM): the"
+            " step in progress finishes, its state is written and the run"
+            " stops; signal again, a second or more from now, to end at"
+            " once without writing\n";
+        const bool isInt = sig == SIGINT;
+        const ssize_t written = ::write(STDERR_FILENO,
+            isInt ? sigint : sigterm,
+            (isInt ? sizeof sigint : sizeof sigterm) - 1);
+        (void)written;   // nothing to do about a closed stderr
         return;
     }
     const long long first = firstSignalNs;   // 0: being set just now

@@ -177,6 +177,62 @@ scalar concentration(const solverSnapshot& s, const Kernel& kernel,
     return c;
 }
 
+// The longest stretch of the line b + t up, 0 <= t <= tMax (sampled every
+// ds), that lies inside one wall or solid body: where the body's own
+// volume fraction sum_j dp_j^d W reaches 0.5, its face. body -1: none.
+struct bodyStretch
+{
+    label body = -1;
+    scalar from = 0, to = 0;
+    scalar length() const { return to - from; }
+};
+
+template<class Kernel>
+bodyStretch longestStretchInBody(const solverSnapshot& s,
+                                 const Kernel& kernel, const vec3& b,
+                                 const vec3& up, const scalar tMax,
+                                 const scalar ds)
+{
+    const particleFields& pf = s.particles;
+    const int d = s.model.nDimensions;
+    bodyStretch longest, current;
+    const label n = label(std::ceil(tMax/ds));
+    for (label i = 0; i <= n; ++i)
+    {
+        const scalar t = std::min(i*ds, tMax);
+        scalar c = 0, nearest = std::numeric_limits<scalar>::max();
+        label body = -1;
+        forEachNear(s, kernel, toPoint(b + t*up), false,
+            [&](const label j, const scalar r)
+        {
+            c += std::pow(s.bodies[pf.body[j]].dp, d)*kernel.W(r);
+            if (r < nearest)
+            {
+                nearest = r;
+                body = pf.body[j];
+            }
+        });
+        if (c < 0.5)
+        {
+            current.body = -1;
+            continue;
+        }
+        if (body == current.body)
+        {
+            current.to = t;
+        }
+        else
+        {
+            current = {body, t, t};
+        }
+        if (current.length() > longest.length() || longest.body < 0)
+        {
+            longest = current;
+        }
+    }
+    return longest;
+}
+
 // Distance from b along the unit vector u to where the ray leaves the
 // cell grid (0 when it starts outside going out).
 scalar extentAlong(const cellGrid& g, const vec3& b, const vec3& u)
@@ -910,6 +966,7 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
     warnOutsideDomain(name(), "gauge", bases, s.cells.grid, 0, warned_,
         frame_.moving() ? s.time : std::nan(""), up);
     std::vector<scalar> heights(locations_.size(), 0);
+    warnedInBody_.resize(locations_.size(), 0);
     withKernel(s.model, [&](auto kernel)
     {
         const scalar ds = 0.25*s.model.dp;
@@ -939,9 +996,37 @@ std::vector<scalar> freeSurfaceGauges::values(const solverSnapshot& s) const
                 }
                 cAbove = c;
             }
+            if (heights[k] == 0 && !warnedInBody_[k])
+            {
+                warnIfInsideBody(s, kernel, k, b, up, sMax, ds);
+            }
         }
     });
     return heights;
+}
+
+
+template<class Kernel>
+void freeSurfaceGauges::warnIfInsideBody(const solverSnapshot& s,
+                                         const Kernel& kernel,
+                                         const std::size_t k, const vec3& b,
+                                         const vec3& up, const scalar sMax,
+                                         const scalar ds) const
+{
+    // A dry gauge whose line runs a spacing or more inside a wall or a
+    // solid (a gauge put inside a gate): the fluid cannot be there, and
+    // the 0 it reads looks like a dry bed. Said once per gauge.
+    const bodyStretch in = longestStretchInBody(s, kernel, b, up, sMax, ds);
+    if (in.body < 0 || in.length() < s.bodies[in.body].dp) return;
+    warnedInBody_[k] = 1;
+    const bodyInfo& body = s.bodies[in.body];
+    warning("Function object '" + name() + "': gauge " + std::to_string(k)
+        + " at " + str(b, 10) + " reads no water, and its line up runs"
+          " inside " + bodyTypeName(body.type) + " body '" + body.name
+        + "' from " + str(in.from) + " to " + str(in.to) + " m above its"
+          " base, where the fluid cannot be: it reads 0 until water stands"
+          " above that (at time " + str(s.time) + "). Move the gauge out of"
+          " the body to measure the water beside it");
 }
 
 

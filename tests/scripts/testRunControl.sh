@@ -133,6 +133,8 @@ os.execvp(sys.argv[1], sys.argv[1:])' sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
     waitExit $pid 60
     rc=$?
     check "$1: ends by the signal (exit $rc)" [ $rc -eq "$3" ]
+    expectIn "$1: the signal is acknowledged as it comes" "$c/log" \
+        "^--> Stop requested \\(SIG$2\\): the step in progress finishes, its state is written and the run stops"
     t=$(sed -n 's/^Stopped at time \([^ ]*\) on .*, time \([^ ]*\) written.*/\2/p' "$c/log")
     check "$1: wrote the state where it stopped ($t)" [ -n "$t" -a "$(timeDirs "$c")" = "0 $t " ]
     expectIn "$1: the log says how to go on" "$c/log" "startFrom latestTime goes on from it"

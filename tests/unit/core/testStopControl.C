@@ -16,6 +16,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <sstream>
+#include <string>
 #include <thread>
 
 using namespace sphvcpm;
@@ -43,11 +44,21 @@ TEST(stopControl, aStopSignalTwiceAtOnceIsOneRequest)
     std::ostringstream log;
     stopControl stop(control, schedule, dir.path(), log);
     EXPECT_EQ(stop.afterStep(0.001), stopAction::none);
+    // The handler writes to file descriptor 2 itself.
+    testing::internal::CaptureStderr();
     std::raise(SIGTERM);
     std::raise(SIGTERM);    // handled, not the default action: no exit
     std::raise(SIGINT);     // within the second: the same request
+    const std::string said = testing::internal::GetCapturedStderr();
     EXPECT_EQ(stopControl::caughtSignal(), SIGTERM);
     EXPECT_EQ(stop.afterStep(0.002), stopAction::writeNow);
+    // Acknowledged at once, once, long before the step ends.
+    const std::string ack = "--> Stop requested (SIGTERM): the step in"
+        " progress finishes, its state is written and the run stops;"
+        " signal again, a second or more from now, to end at once";
+    EXPECT_NE(said.find(ack), std::string::npos) << said;
+    EXPECT_EQ(said.find("Stop requested", said.find(ack) + ack.size()),
+              std::string::npos) << said;
 }
 
 

@@ -378,6 +378,70 @@ TEST(functionObjects, gaugesFindTheFreeSurface)
 }
 
 
+TEST(functionObjects, aGaugeInsideABodyIsWarnedOf)
+{
+    scratchDir tmp;
+    // The gate (x 0.19 to 0.21, up to y = 0.3) with the tank dry to its
+    // right: a gauge in it, one on the dry side, one in the water.
+    const tankScene tank({0, 0, 0}, 1e-6, viscosityType::laminar, false,
+                         {0, 0, 0}, 2, 30);
+    const auto warningsOf = [&](const std::string& locations)
+    {
+        const auto fos = tank.read("gauges { type freeSurfaceGauges;"
+            " locations (" + locations + "); }", tmp.path());
+        const auto* t =
+            dynamic_cast<const functionObjects::table*>(fos.at(0).get());
+        std::ostringstream captured;
+        std::streambuf* const old = std::cerr.rdbuf(captured.rdbuf());
+        std::vector<scalar> h = t->values(tank.snapshot());
+        h = t->values(tank.snapshot(0.1));   // once per gauge
+        std::cerr.rdbuf(old);
+        return std::make_pair(h, captured.str());
+    };
+
+    const auto [h, text] = warningsOf("(0.2 0 0) (0.3 0 0) (0.1 0 0)");
+    ASSERT_EQ(h.size(), 3u);
+    EXPECT_EQ(h[0], 0);
+    EXPECT_EQ(h[1], 0);
+    EXPECT_NEAR(h[2], H, dp/2);
+    // The stretch as the warning gives it, "from a to b m".
+    const auto stretch = [](const std::string& t, const std::string& body)
+    {
+        const std::string key = "inside " + body + "' from ";
+        const std::size_t at = t.find(key);
+        if (at == std::string::npos) return std::make_pair(-1.0, -1.0);
+        std::istringstream is(t.substr(at + key.size()));
+        double a = -1, b = -1;
+        std::string to;
+        is >> a >> to >> b;
+        return std::make_pair(a, b);
+    };
+    EXPECT_NE(text.find("Function object 'gauges': gauge 0 at (0.2 0 0)"
+        " reads no water, and its line up runs inside solid body 'gate'"),
+        std::string::npos) << text;
+    const auto [from, to] = stretch(text, "solid body 'gate");
+    EXPECT_NEAR(from, 0, dp/2) << text;
+    EXPECT_NEAR(to, 0.3, dp/2) << text;
+    EXPECT_NE(text.find("(at time 0)"), std::string::npos) << text;
+    EXPECT_EQ(text.find("gauge 0", text.find("gauge 0") + 1),
+              std::string::npos) << "warned twice:\n" << text;
+    // The dry bed beside the gate and the wet gauge: no warning.
+    EXPECT_EQ(text.find("gauge 1"), std::string::npos) << text;
+    EXPECT_EQ(text.find("gauge 2"), std::string::npos) << text;
+
+    // Dry, its base a spacing inside the floor: its line runs in the wall
+    // 'tank' below the floor's face.
+    const auto [hFloor, floorText] = warningsOf("(0.3 -0.02 0)");
+    EXPECT_EQ(hFloor.at(0), 0);
+    const auto [fromFloor, toFloor] = stretch(floorText, "wall body 'tank");
+    EXPECT_NEAR(fromFloor, 0, dp/4) << floorText;
+    EXPECT_NEAR(toFloor, 0.02, dp/2) << floorText;
+    // ... on the floor's face: none.
+    EXPECT_EQ(warningsOf("(0.3 0 0)").second.find("inside"),
+              std::string::npos);
+}
+
+
 TEST(functionObjects, energySums)
 {
     // Exact double values in the written tables.
