@@ -15,10 +15,11 @@
 // environment makes the beam longer (L/H = 40) to separate the clamp root.
 //
 // Bending stiffness of the square VCPM lattice against the number of layers
-// n through the thickness (theory.md §2.8), from the static tip deflection of
-// the cantilever of STATIC_CANTILEVER.md set A (L = 0.2 m, H = 0.02 m,
-// E = 2 MPa, rho = 1000, self-weight at g = 0.0981, l0 = H/n, 2 clamped
-// columns in the support). The static state is solved by conjugate
+// n through the thickness (docs/vcpm.md, Static cantilever and thin
+// members), from the static tip deflection of the cantilever of
+// STATIC_CANTILEVER.md set A (L = 0.2 m, H = 0.02 m, E = 2 MPa,
+// rho = 1000, self-weight at g = 0.0981, l0 = H/n, 2 clamped columns in
+// the support). The static state is solved by conjugate
 // gradients with the lattice forces as the operator (the deflection is
 // small enough, w/L ~ 1e-3, for the linear problem); -relax uses damped
 // dynamic relaxation instead (much slower; a cross-check).

@@ -1,8 +1,8 @@
 /*---------------------------------------------------------------------------*\
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
-// Entry-level reading of dictionaries: see docs/style-anchors.md 1.5.2 and
-// 1.5.3. Macros are expanded while reading, as OpenFOAM does, so a $name
+// Entry-level reading of dictionaries (syntax: docs/dictionaries.md).
+// Macros are expanded while reading, as OpenFOAM does, so a $name
 // sees the entries written before it (in this dictionary or its parents).
 
 #include "dictionaryParser.H"

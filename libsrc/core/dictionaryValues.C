@@ -2,7 +2,7 @@
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
 // Typed values of dictionary entries: get<T>, set<T>, parseTokens<T> and
-// dimensioned values [name] [dims] value [units] (style-anchors 1.5.4).
+// dimensioned values [name] [dims] value [units] (docs/dictionaries.md).
 
 #include "dictionary.H"
 #include "dictionaryParser.H"

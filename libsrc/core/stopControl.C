@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstring>
 #include <ctime>
+#include <iterator>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -34,10 +35,14 @@ long long monotonicNs()
     return t.tv_sec*1000000000LL + t.tv_nsec;
 }
 
-// The first signal asks for a stop. One within a second of it (SIGINT or
-// SIGTERM) is taken as the same request delivered twice (timeout signals the child, then its process
-// group; a terminal's Ctrl-C reaches every process of the job); a later
-// one ends the process at once.
+// The signals that ask for a stop: Ctrl-C, kill or a batch system's time
+// limit, and the terminal or ssh session of the run closing.
+constexpr int stopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+// The first signal asks for a stop. One within a second of it (any of the
+// three) is taken as the same request delivered twice (timeout signals
+// the child, then its process group; a terminal's Ctrl-C reaches every
+// process of the job); a later one ends the process at once.
 extern "C" void onStopSignal(const int sig)
 {
     const long long now = monotonicNs();
@@ -47,19 +52,18 @@ extern "C" void onStopSignal(const int sig)
         firstSignalNs = now;
         // Said at once (write is async-signal-safe): a step that sub-cycles
         // a stiff solid may take minutes, and a silent Ctrl-C looks lost.
-        static const char sigint[] = "\n--> Stop requested (SIGINT): the"
-            " step in progress finishes, its state is written and the run"
-            " stops; signal again, a second or more from now, to end at"
-            " once without writing\n";
-        static const char sigterm[] = "\n--> Stop requested (SIGTERM): the"
-            " step in progress finishes, its state is written and the run"
-            " stops; signal again, a second or more from now, to end at"
-            " once without writing\n";
-        const bool isInt = sig == SIGINT;
-        const ssize_t written = ::write(STDERR_FILENO,
-            isInt ? sigint : sigterm,
-            (isInt ? sizeof sigint : sizeof sigterm) - 1);
-        (void)written;   // nothing to do about a closed stderr
+        // A closed terminal's stderr refuses it: nothing to do about that.
+        const auto say = [](const char* text)
+        {
+            const ssize_t written = ::write(STDERR_FILENO, text,
+                                            std::strlen(text));
+            (void)written;
+        };
+        say("\n--> Stop requested (");
+        say(sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "SIGHUP");
+        say("): the step in progress finishes, its state is written and the"
+            " run stops; signal again, a second or more from now, to end at"
+            " once without writing\n");
         return;
     }
     const long long first = firstSignalNs;   // 0: being set just now
@@ -112,25 +116,31 @@ stopControl::stopControl(timeControl& control, writeSchedule& schedule,
     file_(caseDir/"system/controlDict"),
     log_(log)
 {
+    static_assert(std::size(stopSignals)
+               == sizeof previous_/sizeof previous_[0]);
     stopSignal = 0;
     firstSignalNs = 0;
     struct sigaction sa{};
     sa.sa_handler = onStopSignal;
-    // The other stop signal waits while the handler runs (the two would
+    // The other stop signals wait while the handler runs (they would
     // otherwise race on the first signal's time).
     sigemptyset(&sa.sa_mask);
-    sigaddset(&sa.sa_mask, SIGINT);
-    sigaddset(&sa.sa_mask, SIGTERM);
+    for (const int sig : stopSignals) sigaddset(&sa.sa_mask, sig);
     // SA_RESTART: a write to the log that the signal interrupts goes on.
     sa.sa_flags = SA_RESTART;
     // A signal ignored when the run started stays ignored: a background
     // job of a script starts with SIGINT ignored and must not stop on the
-    // Ctrl-C meant for the foreground.
-    sigaction(SIGINT, nullptr, &previousInt_);
-    sigaction(SIGTERM, nullptr, &previousTerm_);
-    if (previousInt_.sa_handler != SIG_IGN) sigaction(SIGINT, &sa, nullptr);
-    if (previousTerm_.sa_handler != SIG_IGN) sigaction(SIGTERM, &sa, nullptr);
-    if (previousInt_.sa_handler == SIG_IGN)
+    // Ctrl-C meant for the foreground; nohup ignores SIGHUP so that the
+    // run outlives its terminal.
+    for (std::size_t i = 0; i < std::size(stopSignals); ++i)
+    {
+        sigaction(stopSignals[i], nullptr, &previous_[i]);
+        if (previous_[i].sa_handler != SIG_IGN)
+        {
+            sigaction(stopSignals[i], &sa, nullptr);
+        }
+    }
+    if (previous_[0].sa_handler == SIG_IGN)   // SIGINT
     {
         // Said, since kill -INT then does nothing and a user waits.
         log_<< "SIGINT (Ctrl-C) is ignored, as it was when the run started"
@@ -143,8 +153,10 @@ stopControl::stopControl(timeControl& control, writeSchedule& schedule,
 
 stopControl::~stopControl()
 {
-    sigaction(SIGINT, &previousInt_, nullptr);
-    sigaction(SIGTERM, &previousTerm_, nullptr);
+    for (std::size_t i = 0; i < std::size(stopSignals); ++i)
+    {
+        sigaction(stopSignals[i], &previous_[i], nullptr);
+    }
 }
 
 

@@ -394,7 +394,7 @@ void fsiSolver::readStartTime()
     {
         if (b.type() == bodyType::solid)
         {
-            // Multi-resolution: dp_s = dp_f/r (theory.md §3.6).
+            // Multi-resolution: dp_s = dp_f/r (docs/fsi.md, The coupling).
             const scalar r = dp/b.dp();
             const scalar rInt = std::round(r);
             if (rInt < 1 || rInt > 4 || std::fabs(r - rInt) > 1e-6*r)
@@ -478,7 +478,7 @@ void fsiSolver::readStartTime()
         if (body.type() == bodyType::solid)
         {
             // A moving wall to the fluid, with the fluid-side mass
-            // rho0_f dp_s^d (theory.md §3.3).
+            // rho0_f dp_s^d (docs/fsi.md, The coupling).
             const scalar fluidSideMass =
                 model_.rho0*std::pow(body.dp(), nDim);
             for (label i = 0; i < n; ++i, ++k, ++nextSolid)
@@ -1161,7 +1161,8 @@ double fsiSolver::chooseDeltaT(const scalar maxAcc2, const scalar maxVisc,
     double dt = control_.deltaT;
     if (control_.adjustTimeStep)
     {
-        // theory.md §5.8 (DualSPHysics): force and acoustic-viscous limits.
+        // Force and acoustic-viscous limits (DualSPHysics; docs/solver.md,
+        // Equations, time step).
         const scalar h = model_.h;
         const scalar maxAcc = std::sqrt(maxAcc2);
         const scalar dtForce = maxAcc > 0
@@ -1610,7 +1611,8 @@ void fsiSolver::run()
             << " GiB of " << str(info.totalMemory/1073741824.0, 4)
             << " GiB (" << info.name << ")\n";
     }
-    // Weak compressibility errs in density by about Ma^2 (theory §5.2).
+    // Weak compressibility errs in density by about Ma^2 (docs/solver.md,
+    // Choices, Speed-of-sound check).
     const double maxSpeed = std::sqrt(double(maxSpeed2_));
     const double mach = maxSpeed/model_.c0;
     log_<< "    largest fluid speed " << str(maxSpeed, 4) << " m/s (time "

@@ -16,8 +16,9 @@ void vcpmMaterial::admissibleNu(const vcpmLattice lattice,
                                 const planeModel plane, scalar& lower,
                                 scalar& upper)
 {
-    // Lower bounds from k_L + N_L T_L > 0 (§2.5); the upper bound 1/2 is
-    // the continuum one (plane stress alone would allow up to 1).
+    // Lower bounds from k_L + N_L T_L > 0 (docs/vcpm.md, Choices); the
+    // upper bound 1/2 is the continuum one (plane stress alone would allow
+    // up to 1).
     upper = 0.5;
     lower = lattice == vcpmLattice::square2D
          && plane == planeModel::planeStress ? -1.0/3.0 : -0.5;
@@ -76,7 +77,7 @@ vcpmMaterial::vcpmMaterial(const scalar E_, const scalar nu_,
     C44 = mu;
     pWaveSpeed = std::sqrt(C11/rho);
 
-    // Closed forms for isotropic materials (§2.4).
+    // Closed forms for isotropic materials (docs/vcpm.md, Model).
     if (lattice == vcpmLattice::square2D)
     {
         const scalar t = thickness;

@@ -3,9 +3,10 @@
 # a run"), on the coarse dam break: stopAt writeNow, noWriteNow and
 # nextWrite; controlDict read again when it changes (a new endTime applies,
 # a startTime change is named as read at the next start, a controlDict that
-# no longer reads is a warning and the run goes on); SIGTERM and SIGINT
-# (each sent twice at once: one request) write the state and end the
-# process by the signal, and the run goes on from that state;
+# no longer reads is a warning and the run goes on); SIGTERM, SIGINT and
+# SIGHUP (each sent twice at once: one request) write the state and end the
+# process by the signal, and the run goes on from that state (ignored
+# signals stay ignored);
 # runTimeModifiable no leaves a changed controlDict unread.
 source "$(dirname "$0")/testLib.sh"
 
@@ -120,10 +121,12 @@ signalStop()
 {
     local c pid rc t
     c=$(newCase "$1" 's/^endTime .*/endTime 100;/; s/^writeInterval .*/writeInterval 10;/; s/^logInterval .*/logInterval 200;/')
-    # A background job of a script has SIGINT ignored, and the solver keeps
-    # it so (nohup): start it with the default action.
+    # A background job of a script has SIGINT ignored (and a run under
+    # nohup SIGHUP), and the solver keeps them so: start it with the
+    # default actions.
     python3 -c 'import os, signal, sys
 signal.signal(signal.SIGINT, signal.SIG_DFL)
+signal.signal(signal.SIGHUP, signal.SIG_DFL)
 os.execvp(sys.argv[1], sys.argv[1:])' sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
     pid=$!
     check "$1: the loop runs" waitFor "$c/log" "^Time = " 60
@@ -146,16 +149,21 @@ os.execvp(sys.argv[1], sys.argv[1:])' sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
 }
 signalStop sigterm TERM 143
 signalStop sigint INT 130
+signalStop sighup HUP 129
 
-# A background job with SIGINT ignored keeps ignoring it.
+# A background job with SIGINT ignored keeps ignoring it, and a run under
+# nohup its SIGHUP.
 c=$(newCase ignored 's/^endTime .*/endTime 0.6;/; s/^writeInterval .*/writeInterval 0.3;/; s/^logInterval .*/logInterval 200;/')
-sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
+nohup sphVcpmFsi -case "$c" > "$c/log" 2>&1 &
 pid=$!
 waitFor "$c/log" "^Time = " 60
 check "an ignored SIGINT: running when it is sent" kill -s INT $pid
+check "an ignored SIGHUP: running when it is sent" kill -s HUP $pid
 waitExit $pid 300
-check "an ignored SIGINT stays ignored: exit 0" [ $? -eq 0 ]
-check "an ignored SIGINT stays ignored: ran to endTime" [ -d "$c/0.6" ]
+check "ignored SIGINT and SIGHUP stay ignored: exit 0" [ $? -eq 0 ]
+check "ignored SIGINT and SIGHUP stay ignored: ran to endTime" [ -d "$c/0.6" ]
+check "ignored SIGINT and SIGHUP: no stop requested" \
+    bash -c "! grep -q 'Stop requested' '$c/log'"
 expectIn "an ignored SIGINT: the log says how to stop the run" "$c/log" \
     "SIGINT \\(Ctrl-C\\) is ignored, as it was when the run started .*: stop the run with kill -TERM $pid, or stopAt writeNow"
 

@@ -62,6 +62,42 @@ TEST(stopControl, aStopSignalTwiceAtOnceIsOneRequest)
 }
 
 
+TEST(stopControl, aHangupAsksForAStopUnlessIgnoredAtTheStart)
+{
+    scratchDir dir;
+    timeControl control = readControl(dir);
+    writeSchedule schedule(control, 0);
+    std::ostringstream log;
+    struct sigaction before{};
+    sigaction(SIGHUP, nullptr, &before);
+    // As under nohup: ignored before the run, so ignored in it.
+    std::signal(SIGHUP, SIG_IGN);
+    {
+        stopControl stop(control, schedule, dir.path(), log);
+        std::raise(SIGHUP);
+        EXPECT_EQ(stopControl::caughtSignal(), 0);
+        EXPECT_EQ(stop.afterStep(0.001), stopAction::none);
+    }
+    // A terminal that closes: the same stop as SIGTERM's.
+    std::signal(SIGHUP, SIG_DFL);
+    {
+        stopControl stop(control, schedule, dir.path(), log);
+        testing::internal::CaptureStderr();
+        std::raise(SIGHUP);
+        const std::string said = testing::internal::GetCapturedStderr();
+        EXPECT_EQ(stopControl::caughtSignal(), SIGHUP);
+        EXPECT_EQ(stop.afterStep(0.001), stopAction::writeNow);
+        EXPECT_NE(said.find("--> Stop requested (SIGHUP): the step in"
+            " progress finishes"), std::string::npos) << said;
+    }
+    // Given back as it was found.
+    struct sigaction after{};
+    sigaction(SIGHUP, nullptr, &after);
+    EXPECT_EQ(after.sa_handler, SIG_DFL);
+    sigaction(SIGHUP, &before, nullptr);
+}
+
+
 TEST(stopControlDeathTest, aStopSignalASecondLaterEndsTheProcess)
 {
     GTEST_FLAG_SET(death_test_style, "threadsafe");

@@ -1,12 +1,12 @@
 /*---------------------------------------------------------------------------*\
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
-// The SPH building blocks against analysis (theory.md §5): kernel
-// normalisation and gradients, lattice sums, the Tait equation of state,
-// the fluid rates on a block of particles (rest state, uniform pressure,
-// hydrostatic pressure and density, momentum and mass conservation,
-// laminar viscosity on linear and parabolic shear), the symplectic
-// predictor/corrector and the Verlet step.
+// The SPH building blocks against analysis (docs/solver.md, Equations):
+// kernel normalisation and gradients, lattice sums, the Tait equation of
+// state, the fluid rates on a block of particles (rest state, uniform
+// pressure, hydrostatic pressure and density, momentum and mass
+// conservation, laminar viscosity on linear and parabolic shear), the
+// symplectic predictor/corrector and the Verlet step.
 
 #include "cellList.H"
 #include "fluidInteractions.H"
@@ -336,7 +336,8 @@ TEST(sphKernels, wendlandC2)
 {
     checkKernel<wendlandC2Kernel>("wendlandC2");
 
-    // The constants of theory.md §5.1 (bwenh of DualSPHysics).
+    // Wendland C2: alpha h^2 = 7/(4 pi) in 2D, alpha h^3 = 21/(16 pi) in
+    // 3D, and G(0) = -5 alpha/h^2 (bwenh of DualSPHysics).
     const scalar h = 0.02;
     EXPECT_NEAR(wendlandC2Kernel(h, 2).alpha*h*h, 0.557042, 1e-6);
     EXPECT_NEAR(wendlandC2Kernel(h, 3).alpha*h*h*h, 0.417782, 1e-6);

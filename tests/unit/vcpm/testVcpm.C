@@ -1,12 +1,12 @@
 /*---------------------------------------------------------------------------*\
   sphvcpm: mesh-less fluid-structure interaction (SPH + VCPM)
 \*---------------------------------------------------------------------------*/
-// The VCPM solid against analysis (theory.md §2): constants and bad input,
-// bond counts, force = -dU/dx by finite differences, momentum conservation,
-// rigid rotation, the affine patch test (energy and virial stress equal
-// their continuum values for each admissible nu), serial = OpenMP, and
-// bounded energy at the stable time step, and a clamped column relaxed
-// under gravity with damping.
+// The VCPM solid against analysis (docs/vcpm.md, Model and Tests):
+// constants and bad input, bond counts, force = -dU/dx by finite
+// differences, momentum conservation, rigid rotation, the affine patch test
+// (energy and virial stress equal their continuum values for each
+// admissible nu), serial = OpenMP, and bounded energy at the stable time
+// step, and a clamped column relaxed under gravity with damping.
 
 #include "error.H"
 #include "vcpmBeam.H"
@@ -184,8 +184,9 @@ scalar forceGradientError(vcpmSolid& s, const scalar l0, const int nDim)
 
 TEST(vcpmMaterial, closedFormsMatchCubicMapping)
 {
-    // §2.4: k1 = (C11 - C12)/2, k2 = C44/2, T = (C12 - C44)/12 (square,
-    // times t); R (C11 - C12 - C44), R C44, R (C12 - C44)/18 (SC).
+    // docs/vcpm.md, Model: k1 = (C11 - C12)/2, k2 = C44/2,
+    // T = (C12 - C44)/12 (square, times t); R (C11 - C12 - C44), R C44,
+    // R (C12 - C44)/18 (SC).
     for (const scalar nu : {-0.3, 0.0, 0.25, 0.3, 0.45, 0.49})
     {
         for (const planeModel pl : {pStress, pStrain})
@@ -408,7 +409,8 @@ TEST_P(vcpmLatticeCases, serialEqualsOpenMP)
 // * * * * * * * * * * * * * * * Patch test * * * * * * * * * * * * * * * * //
 
 // Affine strain of the whole block: every interior particle has the energy
-// density 1/2 eps:C:eps and the virial stress C:eps (§2.4, §2.10).
+// density 1/2 eps:C:eps and the virial stress C:eps (docs/vcpm.md, Model;
+// Choices, Stress).
 TEST_P(vcpmLatticeCases, affineStrainGivesContinuumStressAndEnergy)
 {
     // Strains of 1e-6 to 1e-3 on positions of order 1: float resolves
@@ -641,9 +643,9 @@ TEST_P(vcpmLatticeCases, collapsedBondIsFound)
 // bottom layers clamped, relaxes under its own weight to the top
 // displacement of the discrete chain, rho g l0^2 N (N + 1)/(2 E) for N free
 // layers, within 1 % (measured -0.73 %: the free sides are slightly soft,
-// theory.md §2.8). The chain formula is the plain lattice's, so the surface
-// correction is off here (with it the mirror-weighted top face makes the
-// column 1.2 % stiffer than the chain; it is no longer a chain).
+// docs/vcpm.md, Tests). The chain formula is the plain lattice's, so the
+// surface correction is off here (with it the mirror-weighted top face
+// makes the column 1.2 % stiffer than the chain; it is no longer a chain).
 TEST(vcpmSolid, dampedColumnUnderGravity)
 {
     vcpmMaterial m(1e6, 0.0, 1000, sq, 0.01, pStrain, 1);
@@ -1098,9 +1100,10 @@ TEST(vcpmSolid, staticCantileverSetA)
 }
 
 // The plain lattice (surfaceCorrection off) at the same 5 layers: 18.7 %
-// too soft against Timoshenko (theory.md §2.8; the static CG solve of
-// benchmarks/vcpmThinMembers gives the same), and its error model thinMemberStiffnessError(off) puts
-// the deflection within 1 % (measured +0.39 %).
+// too soft against Timoshenko (docs/vcpm.md, Static cantilever and thin
+// members; the static CG solve of benchmarks/vcpmThinMembers gives the
+// same), and its error model thinMemberStiffnessError(off) puts the
+// deflection within 1 % (measured +0.39 %).
 TEST(vcpmSolid, staticCantileverSetAUncorrected)
 {
     // Strains of 1e-6 to 1e-3 on positions of order 1: float resolves
