@@ -163,6 +163,17 @@ struct tankScene
             fields.body[i] = ps[i].body;
             fields.id[i] = i;
         }
+        if (gateLayers > 0)
+        {
+            // The gate's particles link to their index in gatePoints, the
+            // solid arrays of a snapshot given solids {gatePoints}.
+            fields.link.assign(n, -1);
+            label k = 0;
+            for (label i = 0; i < n; ++i)
+            {
+                if (ps[i].body == 3) fields.link[i] = k++;
+            }
+        }
 
         const cellGrid grid = makeCellGrid(
             toPoint(vec3{-0.05, -0.05, 0} + shift),
@@ -439,6 +450,62 @@ TEST(functionObjects, aGaugeInsideABodyIsWarnedOf)
     // ... on the floor's face: none.
     EXPECT_EQ(warningsOf("(0.3 0 0)").second.find("inside"),
               std::string::npos);
+}
+
+
+TEST(functionObjects, aPartCutThroughAThinMemberIsWarnedOf)
+{
+    // A gate two particles across (0.02 m) under the water, which stands
+    // on both its sides: the support 2h = 0.03 m reaches across it. Its
+    // upstream layer alone takes the push of the fluid on the far face as
+    // well, against its own face's load: warned, with the share. Its lower
+    // half (cut along it) and the tank's wall above mid-depth are not.
+    scratchDir tmp;
+    const tankScene gate({0, 0, 0}, 1e-6, viscosityType::laminar, false,
+                         {0, 0, 0}, 2, 10);
+    const std::vector<solidView> solids{
+        {"gate", &gate.gatePoints, &gate.gatePoints, 0}};
+    const auto sampled = [&](const tankScene& scene, const std::string& fo)
+    {
+        const auto fos = scene.read(fo, tmp.path());
+        const auto* t =
+            dynamic_cast<const functionObjects::table*>(fos.at(0).get());
+        std::ostringstream captured;
+        std::streambuf* const old = std::cerr.rdbuf(captured.rdbuf());
+        std::vector<scalar> F;
+        for (const scalar time : {0.0, 0.1})   // warned once
+        {
+            solverSnapshot snap = scene.snapshot(time);
+            snap.solids = &solids;
+            F = t->values(snap);
+        }
+        std::cerr.rdbuf(old);
+        return std::make_pair(F, captured.str());
+    };
+    const auto [layerF, layer] = sampled(gate, "up { type forces;"
+        " body gate; shapes { l { shape box; min (0 0 0);"
+        " max (0.2 1 0); } } }");
+    // Why: the layer carries 35 % less than the load on its face,
+    // rho g (H h - h^2/2) over the gate's height h = 0.1 m.
+    const scalar faceLoad = rho0*gMag*(H*0.1 - 0.5*0.1*0.1);
+    EXPECT_LT(layerF.at(0), 0.8*faceLoad);
+    EXPECT_NE(layer.find("Function object 'up': "), std::string::npos);
+    EXPECT_NE(layer.find(" % of the fluid's push on its part of body gate"
+        " is the push of fluid that lies against the rest of the body (at"
+        " time 0): the shapes cut through a member thinner than the"
+        " kernel's support 2h = 0.03 m"), std::string::npos) << layer;
+    const double share = std::stod(layer.substr(layer.find("'up': ") + 6));
+    EXPECT_GT(share, 10) << layer;     // 13.7
+    EXPECT_LT(share, 20) << layer;
+    EXPECT_EQ(layer.find("Function object 'up'", layer.find("'up'") + 1),
+              std::string::npos) << "warned twice:\n" << layer;
+
+    // Cut along: 4.2 % (the gate's lower half) and 6.5 % (the wall above
+    // mid-depth) come from the pairs across the cut's edge: no warning.
+    EXPECT_EQ(sampled(gate, "low { type forces; body gate; shapes { l {"
+        " shape box; min (0 0 0); max (1 0.05 0); } } }").second, "");
+    EXPECT_EQ(sampled(tankScene(), "w { type forces; body tank; shapes {"
+        " u { shape box; min (-1 0.1 0); max (0 1 0); } } }").second, "");
 }
 
 
