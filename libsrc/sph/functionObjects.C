@@ -177,6 +177,18 @@ scalar concentration(const solverSnapshot& s, const Kernel& kernel,
     return c;
 }
 
+// The pressure part of the fluid particle j's push on the boundary
+// particle w at distance r, as the pair terms see it (fluidPairTerms):
+// a_j -= m_w (p_j + p_w)/(rho_j rho_w) G x_jw, times m_j.
+template<class Kernel>
+vec3 pressurePushOn(const particleFields& pf, const Kernel& kernel,
+                    const label w, const label j, const scalar r)
+{
+    const vec3 d = toVec3(pf.position[j] - pf.position[w]);   // x_jw
+    return (pf.mass[j]*pf.mass[w]*(pressureTowardBoundary(pf.p[j]) + pf.p[w])
+           /(pf.rho[j]*pf.rho[w])*kernel.gradFactor(r))*d;
+}
+
 // The longest stretch of the line b + t up, 0 <= t <= tMax (sampled every
 // ds), that lies inside one wall or solid body: where the body's own
 // volume fraction sum_j dp_j^d W reaches 0.5, its face. body -1: none.
@@ -1176,7 +1188,6 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
             const vec3 vw = pf.velocity[w];
             const scalar mw = pf.mass[w];
             const scalar rhow = pf.rho[w];
-            const scalar pw = pf.p[w];
             forEachFluidNear(s, kernel, xw, [&](const label j, const scalar r)
             {
                 if (r <= 0) return;
@@ -1184,10 +1195,7 @@ std::vector<std::vector<scalar>> forces::rows(const solverSnapshot& s) const
                 const scalar G = kernel.gradFactor(r);
                 const scalar mf = pf.mass[j];
                 const scalar rhof = pf.rho[j];
-                // a_f -= m_w (p_f + p_w)/(rho_f rho_w) G x_fw
-                // As the pair terms see it (fluidPairTerms).
-                const scalar pf_j = pressureTowardBoundary(pf.p[j]);
-                f += (mf*mw*(pf_j + pw)/(rhof*rhow)*G)*d;
+                f += pressurePushOn(pf, kernel, w, j, r);
                 // a_f += m_w C x_fw, the contact push
                 f -= (mf*mw*contact(r*r, mw))*d;
                 if (laminar)
@@ -1252,10 +1260,7 @@ void forces::warnIfCutThrough(const solverSnapshot& s, const Kernel& kernel,
             [&](const label j, const scalar r)
         {
             if (r <= 0) return;
-            const vec3 push = (pf.mass[j]*pf.mass[w]
-                *(pressureTowardBoundary(pf.p[j]) + pf.p[w])
-                /(pf.rho[j]*pf.rho[w])*kernel.gradFactor(r))
-                *toVec3(pf.position[j] - pf.position[w]);
+            const vec3 push = pressurePushOn(pf, kernel, w, j, r);
             scalar nearest = std::numeric_limits<scalar>::max();
             bool againstRest = false;
             forEachNear(s, kernel, pf.position[j], false,

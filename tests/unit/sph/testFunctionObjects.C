@@ -227,6 +227,27 @@ struct tankScene
         EXPECT_NE(t, nullptr);
         return t->values(snapshot());
     }
+
+    // The values of the one function object of functions sampled at times
+    // 0 and 0.1 (solids: the snapshots' solid arrays), and what it warned
+    // of on stderr meanwhile: a warning said once is there once.
+    std::pair<std::vector<scalar>, std::string> sampledTwice(
+        const std::string& functions, const fs::path& caseDir,
+        const std::vector<solidView>* solids = nullptr) const
+    {
+        const auto fos = read(functions, caseDir);
+        const auto* t =
+            dynamic_cast<const functionObjects::table*>(fos.at(0).get());
+        testing::internal::CaptureStderr();
+        std::vector<scalar> v;
+        for (const scalar time : {0.0, 0.1})
+        {
+            solverSnapshot snap = snapshot(time);
+            snap.solids = solids;
+            v = t->values(snap);
+        }
+        return {v, testing::internal::GetCapturedStderr()};
+    }
 };
 
 } // End anonymous namespace
@@ -398,16 +419,8 @@ TEST(functionObjects, aGaugeInsideABodyIsWarnedOf)
                          {0, 0, 0}, 2, 30);
     const auto warningsOf = [&](const std::string& locations)
     {
-        const auto fos = tank.read("gauges { type freeSurfaceGauges;"
+        return tank.sampledTwice("gauges { type freeSurfaceGauges;"
             " locations (" + locations + "); }", tmp.path());
-        const auto* t =
-            dynamic_cast<const functionObjects::table*>(fos.at(0).get());
-        std::ostringstream captured;
-        std::streambuf* const old = std::cerr.rdbuf(captured.rdbuf());
-        std::vector<scalar> h = t->values(tank.snapshot());
-        h = t->values(tank.snapshot(0.1));   // once per gauge
-        std::cerr.rdbuf(old);
-        return std::make_pair(h, captured.str());
     };
 
     const auto [h, text] = warningsOf("(0.2 0 0) (0.3 0 0) (0.1 0 0)");
@@ -467,20 +480,7 @@ TEST(functionObjects, aPartCutThroughAThinMemberIsWarnedOf)
         {"gate", &gate.gatePoints, &gate.gatePoints, 0}};
     const auto sampled = [&](const tankScene& scene, const std::string& fo)
     {
-        const auto fos = scene.read(fo, tmp.path());
-        const auto* t =
-            dynamic_cast<const functionObjects::table*>(fos.at(0).get());
-        std::ostringstream captured;
-        std::streambuf* const old = std::cerr.rdbuf(captured.rdbuf());
-        std::vector<scalar> F;
-        for (const scalar time : {0.0, 0.1})   // warned once
-        {
-            solverSnapshot snap = scene.snapshot(time);
-            snap.solids = &solids;
-            F = t->values(snap);
-        }
-        std::cerr.rdbuf(old);
-        return std::make_pair(F, captured.str());
+        return scene.sampledTwice(fo, tmp.path(), &solids);   // warned once
     };
     const auto [layerF, layer] = sampled(gate, "up { type forces;"
         " body gate; shapes { l { shape box; min (0 0 0);"
